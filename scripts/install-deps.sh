@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs the Debian packages ivv needs, and only those that are missing.
+# Called by `make`; safe to run repeatedly (a no-op once everything is present).
+set -euo pipefail
+
+packages=(
+  cmake make g++ pkg-config clang-format
+  libboost-dev libboost-math-dev      # odeint, math (TOMS 748, Lambert W, Beta), multiprecision
+  libeigen3-dev
+  libgsl-dev                          # odeiv2, integration
+  libgtest-dev libgmock-dev
+  libbenchmark-dev
+  libfccp-dev                         # fast-cpp-csv-parser
+  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
+  libmuparser-dev                     # expression contact laws
+  gnuplot-nox                         # report plots (SVG terminal)
+)
+if [ "${IVV_WITH_BROWSER:-0}" = 1 ]; then
+  packages+=(chromium)                # headless rendering test of the report
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  SUDO=sudo
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,226 @@
+#include "solver/scene.h"
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "solver/input_error.h"
+
+namespace ivv {
+namespace {
+
+// Accepted ranges. They are wide on purpose (SPEC §6 asks for masses from 1e-6 to 1e3 kg and
+// velocities from 1e-6 to beyond 100 m/s); they exclude only the physically meaningless.
+void require_positive_finite(const std::string& field, double v, const char* unit) {
+  if (!std::isfinite(v) || v <= 0.0) {
+    std::ostringstream os;
+    os << "must be a finite number > 0 " << unit << " (got " << v << ")";
+    throw InputError(field, os.str());
+  }
+}
+
+void require_poisson(const std::string& field, double nu) {
+  if (!std::isfinite(nu) || nu <= -1.0 || nu >= 0.5) {
+    std::ostringstream os;
+    os << "Poisson's ratio must lie in (-1, 0.5) (got " << nu << ")";
+    throw InputError(field, os.str());
+  }
+}
+
+}  // namespace
+
+void validate(const Scene& s) {
+  require_positive_finite("impactor.mass", s.mass, "kg");
+  require_positive_finite("impactor.radius", s.radius, "m");
+  require_positive_finite("impactor.youngs_modulus", s.impactor_youngs_modulus, "Pa");
+  require_poisson("impactor.poisson_ratio", s.impactor_poisson_ratio);
+  require_positive_finite("target.youngs_modulus", s.target_youngs_modulus, "Pa");
+  require_poisson("target.poisson_ratio", s.target_poisson_ratio);
+  require_positive_finite("target.yield_strength", s.yield_strength, "Pa");
+  require_positive_finite("impact.velocity", s.velocity, "m/s");
+  switch (s.damping.kind) {
+    case Damping::Kind::none:
+      break;
+    case Damping::Kind::ratio:
+      require_positive_finite("damping.zeta", s.damping.value, "(dimensionless)");
+      break;
+    case Damping::Kind::coefficient:
+      require_positive_finite("damping.c", s.damping.value, "N s/m");
+      break;
+  }
+}
+
+DerivedParameters derive(const Scene& s) {
+  DerivedParameters p;
+  const double compliance = (1.0 - s.impactor_poisson_ratio * s.impactor_poisson_ratio) /
+                                s.impactor_youngs_modulus +
+                            (1.0 - s.target_poisson_ratio * s.target_poisson_ratio) /
+                                s.target_youngs_modulus;
+  p.E_star = 1.0 / compliance;                                           // eq. 7
+  p.K_h = 4.0 / 3.0 * std::sqrt(s.radius) * p.E_star;                    // eq. 6
+  const double pi2 = std::numbers::pi * std::numbers::pi;
+  p.z_y = 0.68 * s.yield_strength * s.yield_strength * pi2 * s.radius /  // eq. 11
+          (p.E_star * p.E_star);
+  p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);  // eq. 12
+  p.omega0 = std::sqrt(p.K_y / s.mass);     // eq. 23
+  const double critical = std::sqrt(s.mass * p.K_y);  // 2 c zeta
+  switch (s.damping.kind) {
+    case Damping::Kind::none:
+      break;
+    case Damping::Kind::ratio:
+      p.zeta = s.damping.value;
+      p.c = critical / (2.0 * p.zeta);
+      break;
+    case Damping::Kind::coefficient:
+      p.c = s.damping.value;
+      p.zeta = critical / (2.0 * p.c);
+      break;
+  }
+  p.v_yield = std::sqrt(4.0 * p.K_h * std::pow(p.z_y, 2.5) / (5.0 * s.mass));
+  return p;
+}
+
+Scales scales(const Scene& s, const DerivedParameters& p) {
+  Scales k;
+  k.time = 1.0 / p.omega0;
+  k.length = s.velocity / p.omega0;
+  k.velocity = s.velocity;
+  k.force = s.mass * s.velocity * p.omega0;
+  k.energy = s.mass * s.velocity * s.velocity;
+  return k;
+}
+
+Scene paper_scene() {
+  Scene s;
+  s.name = "paper";
+  s.mass = 0.5;
+  s.radius = 0.010;
+  s.impactor_youngs_modulus = 207e9;
+  s.impactor_poisson_ratio = 0.3;
+  s.target_youngs_modulus = 7.9e9;
+  s.target_poisson_ratio = 0.3;
+  s.yield_strength = 2.0 * 101e6;  // laminate: S_y = 2 S_u
+  s.velocity = 1.0;
+  return s;
+}
+
+namespace {
+
+void reject_unknown_keys(const toml::table& table, const std::string& prefix,
+                         const std::set<std::string>& allowed) {
+  for (const auto& [key, node] : table) {
+    const std::string k(key.str());
+    if (!allowed.count(k)) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      throw InputError(prefix.empty() ? k : prefix + "." + k,
+                       "unknown key; accepted keys here: " + list);
+    }
+  }
+}
+
+const toml::table& require_table(const toml::table& root, const std::string& name) {
+  const toml::table* t = root[name].as_table();
+  if (!t) throw InputError(name, "missing section [" + name + "]");
+  return *t;
+}
+
+std::optional<double> number(const toml::table& t, const std::string& section,
+                             const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (auto v = n->value<double>()) return v;
+  throw InputError(section + "." + key, "must be a number");
+}
+
+double required_number(const toml::table& t, const std::string& section, const std::string& key) {
+  auto v = number(t, section, key);
+  if (!v) throw InputError(section + "." + key, "missing (required)");
+  return *v;
+}
+
+}  // namespace
+
+Scene parse_scene_toml(const std::string& text, const std::string& source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source_name);
+  } catch (const toml::parse_error& err) {
+    std::ostringstream os;
+    os << "TOML syntax error at line " << err.source().begin.line << ", column "
+       << err.source().begin.column << ": " << err.description();
+    throw InputError(source_name, os.str());
+  }
+  reject_unknown_keys(root, "", {"name", "impactor", "target", "damping", "impact"});
+
+  Scene s;
+  s.name = root["name"].value_or(std::filesystem::path(source_name).stem().string());
+
+  const toml::table& imp = require_table(root, "impactor");
+  reject_unknown_keys(imp, "impactor", {"mass", "radius", "youngs_modulus", "poisson_ratio"});
+  s.mass = required_number(imp, "impactor", "mass");
+  s.radius = required_number(imp, "impactor", "radius");
+  s.impactor_youngs_modulus = required_number(imp, "impactor", "youngs_modulus");
+  s.impactor_poisson_ratio = required_number(imp, "impactor", "poisson_ratio");
+
+  const toml::table& tgt = require_table(root, "target");
+  reject_unknown_keys(tgt, "target",
+                      {"youngs_modulus", "poisson_ratio", "yield_strength", "shear_strength"});
+  s.target_youngs_modulus = required_number(tgt, "target", "youngs_modulus");
+  s.target_poisson_ratio = required_number(tgt, "target", "poisson_ratio");
+  const auto yield = number(tgt, "target", "yield_strength");
+  const auto shear = number(tgt, "target", "shear_strength");
+  if (yield && shear) {
+    throw InputError("target.shear_strength",
+                     "give either yield_strength (S_y) or shear_strength (S_u, laminates: "
+                     "S_y = 2 S_u), not both");
+  }
+  if (!yield && !shear) {
+    throw InputError("target.yield_strength",
+                     "missing (required; a laminate may give shear_strength instead)");
+  }
+  if (shear) {
+    if (!std::isfinite(*shear) || *shear <= 0.0) {
+      throw InputError("target.shear_strength", "must be a finite number > 0 Pa");
+    }
+    s.yield_strength = 2.0 * *shear;
+  } else {
+    s.yield_strength = *yield;
+  }
+
+  if (const toml::table* d = root["damping"].as_table()) {
+    reject_unknown_keys(*d, "damping", {"zeta", "c"});
+    const auto zeta = number(*d, "damping", "zeta");
+    const auto c = number(*d, "damping", "c");
+    if (zeta && c) throw InputError("damping", "give one of zeta or c, not both");
+    if (zeta) s.damping = Damping::ratio(*zeta);
+    if (c) s.damping = Damping::coefficient(*c);
+  } else if (root.contains("damping")) {
+    throw InputError("damping", "must be a table [damping] with zeta or c");
+  }
+
+  const toml::table& impact = require_table(root, "impact");
+  reject_unknown_keys(impact, "impact", {"velocity"});
+  s.velocity = required_number(impact, "impact", "velocity");
+
+  validate(s);
+  return s;
+}
+
+Scene load_scene_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("--scene", "cannot read scene file '" + path.string() + "'");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_scene_toml(buffer.str(), path.string());
+}
+
+Scene load_scene(const std::string& name_or_path) {
+  if (name_or_path == "paper") return paper_scene();
+  return load_scene_file(name_or_path);
+}
+
+}  // namespace ivv
