@@ -5,7 +5,8 @@ set -euo pipefail
 
 packages=(
   cmake make g++ pkg-config clang-format
-  libboost-dev libboost-math-dev      # odeint, math (TOMS 748, Lambert W, Beta), multiprecision
+  libboost1.81-dev libboost-math1.81-dev  # odeint, math, multiprecision; 1.81: its uBLAS
+                                          # (odeint rosenbrock4) compiles as C++20, 1.74 does not
   libeigen3-dev
   libgsl-dev                          # odeiv2, integration
   libgtest-dev libgmock-dev

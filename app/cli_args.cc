@@ -1,0 +1,55 @@
+#include "app/cli_args.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "solver/input_error.h"
+#include "solver/sweep.h"
+
+namespace ivv {
+namespace {
+
+double parse_number(const std::string& s, const std::string& field) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != s.size() || !std::isfinite(v))
+    throw InputError(field, "'" + s + "' is not a finite number");
+  return v;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep)) parts.push_back(item);
+  if (!s.empty() && s.back() == sep) parts.emplace_back();
+  return parts;
+}
+
+}  // namespace
+
+std::vector<double> parse_grid(const std::string& text, const std::string& field, bool log) {
+  const std::string syntax = "expected LO:HI:N (N >= 1 points) or a comma-separated list";
+  if (text.find(':') != std::string::npos) {
+    const auto parts = split(text, ':');
+    if (parts.size() != 3) throw InputError(field, "'" + text + "': " + syntax);
+    const double lo = parse_number(parts[0], field), hi = parse_number(parts[1], field);
+    const double n = parse_number(parts[2], field);
+    if (n < 1 || n != std::floor(n) || n > 1e6)
+      throw InputError(field, "point count N must be an integer in [1, 1e6] (got " + parts[2] + ")");
+    if (hi < lo) throw InputError(field, "HI must not be below LO in '" + text + "'");
+    if (log && !(lo > 0)) throw InputError(field, "a --log grid needs LO > 0");
+    return log ? log_grid(lo, hi, static_cast<int>(n)) : linear_grid(lo, hi, static_cast<int>(n));
+  }
+  std::vector<double> values;
+  for (const auto& p : split(text, ',')) values.push_back(parse_number(p, field));
+  if (values.empty()) throw InputError(field, "empty list: " + syntax);
+  return values;
+}
+
+}  // namespace ivv

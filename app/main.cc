@@ -1,0 +1,315 @@
+// ivv: the command line. A thin layer: everything it prints is computable through the
+// libraries (solver, oracles, verification, reports).
+//
+// Exit codes: 0 success; 1 a computation failed (integrator could not meet its tolerance,
+// a verification case failed); 2 bad input (message names the field and accepted range).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+
+#include "app/cli_args.h"
+#include "app/result_json.h"
+#include "solver/atomic_file.h"
+#include "solver/input_error.h"
+#include "solver/simulate.h"
+#include "solver/sweep.h"
+
+namespace ivv {
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+// Options shared by simulate and sweep.
+struct ModelFlags {
+  std::string scene;
+  std::optional<double> v0;
+  std::optional<double> zeta;
+  std::optional<double> c;
+  bool no_dashpot = false;
+  std::string law = "elastoplastic";
+  std::string integrator = "odeint-dopri5";
+  std::optional<double> rtol, atol, dt;
+  std::optional<double> hc_k;
+  double hc_mu = 0.0;
+  long max_steps = IntegratorOptions{}.max_steps;
+};
+
+void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping) {
+  cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)")
+      ->required();
+  if (with_velocity_and_damping) {
+    cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
+    auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
+    auto* c = cmd.add_option("--c", f.c, "dashpot coefficient [N s/m]");
+    auto* n = cmd.add_flag("--no-dashpot", f.no_dashpot, "ignore the scene's dashpot");
+    z->excludes(c)->excludes(n);
+    c->excludes(n);
+  }
+  cmd.add_option("--law", f.law, "contact law: hertz, elastoplastic, linearized, hunt-crossley")
+      ->capture_default_str();
+  cmd.add_option("--integrator", f.integrator, "integrator (see `ivv integrators`)")
+      ->capture_default_str();
+  cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
+  cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
+  cmd.add_option("--dt", f.dt, "fixed step of rk4 in normalised time tau = omega0 t (default 1e-3)");
+  cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")->capture_default_str();
+  cmd.add_option("--hc-k", f.hc_k, "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
+  cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m]")->capture_default_str();
+}
+
+SimulationRequest build_request(const ModelFlags& f) {
+  SimulationRequest req;
+  req.scene = load_scene(f.scene);
+  if (f.v0) {
+    if (!(std::isfinite(*f.v0) && *f.v0 > 0)) throw InputError("--v0", "must be a finite number > 0 m/s");
+    req.scene.velocity = *f.v0;
+  }
+  if (f.zeta) {
+    if (!(std::isfinite(*f.zeta) && *f.zeta > 0))
+      throw InputError("--zeta", "must be a finite number > 0 (use --no-dashpot for none)");
+    req.scene.damping = Damping::ratio(*f.zeta);
+  }
+  if (f.c) {
+    if (!(std::isfinite(*f.c) && *f.c > 0))
+      throw InputError("--c", "must be a finite number > 0 N s/m (use --no-dashpot for none)");
+    req.scene.damping = Damping::coefficient(*f.c);
+  }
+  if (f.no_dashpot) req.scene.damping = Damping::none();
+  req.law = parse_law(f.law);
+  req.integrator = parse_integrator(f.integrator);
+  if (req.law == LawKind::hunt_crossley && (f.zeta || f.c)) {
+    throw InputError(f.zeta ? "--zeta" : "--c",
+                     "hunt-crossley carries its own damping (--hc-mu) and runs without the "
+                     "series dashpot");
+  }
+  if (req.law == LawKind::hunt_crossley) req.scene.damping = Damping::none();
+  if (f.rtol) req.options.rtol = *f.rtol;
+  if (f.atol) req.options.atol = *f.atol;
+  if (f.dt) {
+    if (!(*f.dt > 0)) throw InputError("--dt", "must be > 0 (normalised time)");
+    req.options.dt = *f.dt;
+  }
+  req.options.max_steps = f.max_steps;
+  req.hunt_crossley.K = f.hc_k;
+  req.hunt_crossley.mu = f.hc_mu;
+  validate(req);
+  return req;
+}
+
+void print_summary(std::ostream& out, const SimulationRequest& req, const ImpactResult& r) {
+  const DerivedParameters p = derive(req.scene);
+  out << std::setprecision(6);
+  out << "scene " << req.scene.name << ", law " << to_string(req.law) << ", integrator "
+      << to_string(req.integrator) << "\n";
+  out << "  v0 = " << req.scene.velocity << " m/s (v_y = " << p.v_yield << " m/s), ";
+  if (p.has_dashpot())
+    out << "zeta = " << p.zeta << " (c = " << p.c << " N s/m)\n";
+  else
+    out << "no dashpot\n";
+  out << "  status       " << to_string(r.status);
+  if (!r.reason.empty()) out << ": " << r.reason;
+  out << "\n";
+  if (!r.ok()) return;
+  out << std::setprecision(8);
+  out << "  COR          e = " << r.e << "  (Poisson " << r.e_poisson << ", energetic "
+      << r.e_energetic << ")\n";
+  out << std::setprecision(6);
+  out << "  peak force   F_max = " << r.F_max << " N at t = " << r.t_F_max * 1e3 << " ms\n";
+  out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
+  out << "  deformation  z_max = " << r.z_max * 1e3 << " mm, alpha_max = " << r.alpha_max * 1e3
+      << " mm, z_perm = " << r.z_perm * 1e3 << " mm\n";
+  out << "  energy [J]   initial " << r.energy.initial << " = final " << r.energy.final
+      << " + plastic " << r.energy.plastic << " + viscous " << r.energy.viscous;
+  if (r.energy.stored > 0) out << " + stored " << r.energy.stored;
+  out << " + residual " << r.energy.residual << "\n";
+  out << "  impulse      " << r.impulse << " N s (m v0 (1 + e) = "
+      << req.scene.mass * req.scene.velocity * (1 + r.e) << ")\n";
+  out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
+}
+
+int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_path) {
+  const SimulationRequest req = build_request(f);
+  std::vector<TrajectoryPoint> trajectory;
+  const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
+  if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
+  if (!trajectory_path.empty() && r.ok()) {
+    write_file_atomically(trajectory_path, [&](std::ostream& out) {
+      out << "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar\n" << std::setprecision(12);
+      for (const auto& p : trajectory)
+        out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
+            << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
+    });
+  }
+  if (json) {
+    std::cout << simulation_json(req, r).dump(2) << std::endl;
+  } else {
+    print_summary(std::cout, req, r);
+  }
+  if (!r.ok()) {
+    if (json) std::cerr << "ivv simulate: " << r.reason << "\n";
+    return kExitFailure;
+  }
+  return 0;
+}
+
+int run_sweep_command(const ModelFlags& f, const std::string& v0_grid, bool log,
+                      const std::string& zeta_grid, const std::string& out_path, int threads) {
+  SweepRequest req;
+  ModelFlags base = f;
+  req.base = build_request(base);
+  req.velocities = parse_grid(v0_grid, "--v0", log);
+  req.zetas = parse_grid(zeta_grid, "--zeta", false);
+  if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  req.threads = threads;
+  const auto start = std::chrono::steady_clock::now();
+  bool shown = false;
+  req.progress = [&](std::size_t done, std::size_t total) {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (elapsed < 1.0 && done < total) return;
+    if (elapsed < 1.0 && !shown) return;
+    shown = true;
+    std::fprintf(stderr, "\rivv sweep: %zu/%zu impacts (%.0f%%), %.1f s", done, total,
+                 100.0 * done / total, elapsed);
+    if (done == total) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  };
+  const auto points = run_sweep(req);
+  std::size_t failed = 0;
+  write_file_atomically(out_path, [&](std::ostream& out) {
+    out << "v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,"
+           "energy_residual,steps,status\n"
+        << std::setprecision(12);
+    for (const auto& p : points) {
+      const auto& r = p.result;
+      if (!r.ok()) ++failed;
+      out << p.v0 << ',' << p.zeta << ',' << r.e << ',' << r.e_poisson << ',' << r.e_energetic
+          << ',' << r.F_max << ',' << r.t_F_max << ',' << r.t_contact << ',' << r.z_max << ','
+          << r.alpha_max << ',' << r.z_perm << ',' << r.energy.residual << ',' << r.steps << ','
+          << to_string(r.status) << '\n';
+    }
+  });
+  std::cerr << "ivv sweep: wrote " << points.size() << " impacts to " << out_path;
+  if (failed) std::cerr << " (" << failed << " failed: see the status column)";
+  std::cerr << "\n";
+  return failed ? kExitFailure : 0;
+}
+
+int run_scene_show(const std::string& scene_name, bool json) {
+  const Scene s = load_scene(scene_name);
+  const DerivedParameters p = derive(s);
+  if (json) {
+    std::cout << scene_json(s, p).dump(2) << std::endl;
+    return 0;
+  }
+  std::cout << std::setprecision(6) << "scene " << s.name << "\n"
+            << "  impactor  m = " << s.mass << " kg, R = " << s.radius << " m, E1 = "
+            << s.impactor_youngs_modulus << " Pa, nu1 = " << s.impactor_poisson_ratio << "\n"
+            << "  target    E2 = " << s.target_youngs_modulus << " Pa, nu2 = "
+            << s.target_poisson_ratio << ", S_y = " << s.yield_strength << " Pa\n"
+            << "  impact    v0 = " << s.velocity << " m/s\n"
+            << "derived\n"
+            << "  E*     = " << p.E_star << " Pa\n"
+            << "  K_h    = " << p.K_h << " N/m^1.5\n"
+            << "  z_y    = " << p.z_y << " m\n"
+            << "  K_y    = " << p.K_y << " N/m\n"
+            << "  omega0 = " << p.omega0 << " rad/s\n"
+            << "  v_y    = " << p.v_yield << " m/s\n";
+  if (p.has_dashpot())
+    std::cout << "  zeta   = " << p.zeta << ", c = " << p.c << " N s/m\n";
+  else
+    std::cout << "  no dashpot (c = inf, zeta = 0)\n";
+  return 0;
+}
+
+}  // namespace
+}  // namespace ivv
+
+int main(int argc, char** argv) {
+  using namespace ivv;
+  CLI::App app{
+      "ivv - verification and validation of impact contact models.\n"
+      "A sphere strikes a half-space through a nonlinear elastoplastic contact spring in\n"
+      "series with a dashpot. Start with:\n"
+      "  ivv simulate --scene paper --v0 1 --c 11440\n"
+      "  ivv scene show --scene paper\n"
+      "  ivv integrators"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "help for every subcommand");
+
+  ModelFlags sim_flags;
+  bool json = false;
+  std::string trajectory;
+  auto* sim = app.add_subcommand("simulate", "run one impact and print COR, peak force, contact time");
+  add_model_flags(*sim, sim_flags, true);
+  sim->add_flag("--json", json, "print one JSON object on stdout instead of the summary");
+  sim->add_option("--trajectory", trajectory,
+                  "write t, alpha, alpha_dot, y, z, F, tau, alpha_bar, F_bar to this CSV");
+
+  ModelFlags sweep_flags;
+  std::string v0_grid, zeta_grid, out_path;
+  bool log = false;
+  int threads = 0;
+  auto* sweep = app.add_subcommand("sweep", "COR and peak force over a v0 x zeta grid, to CSV");
+  add_model_flags(*sweep, sweep_flags, false);
+  sweep->add_option("--v0", v0_grid, "velocities [m/s]: LO:HI:N or a,b,c")->required();
+  sweep->add_flag("--log", log, "logarithmic spacing of the LO:HI:N velocity grid");
+  sweep->add_option("--zeta", zeta_grid, "damping ratios: LO:HI:N or a,b,c (0 = no dashpot)")
+      ->required();
+  sweep->add_option("--out", out_path, "output CSV")->required();
+  sweep->add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
+
+  auto* scene_cmd = app.add_subcommand("scene", "scene utilities");
+  scene_cmd->require_subcommand(1);
+  std::string show_scene;
+  bool show_json = false;
+  auto* show = scene_cmd->add_subcommand("show", "print a scene and its derived parameters");
+  show->add_option("--scene", show_scene, "scene file or 'paper'")->required();
+  show->add_flag("--json", show_json, "JSON output");
+
+  auto* integrators = app.add_subcommand("integrators", "list the integrators, one per line");
+  bool verbose = false;
+  integrators->add_flag("-v,--verbose", verbose, "add a description to each");
+  auto* laws = app.add_subcommand("laws", "list the contact laws, one per line");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "ivv: " << e.what() << "\n(run with --help for usage)\n";
+    return 2;
+  }
+
+  try {
+    if (*sim) return run_simulate(sim_flags, json, trajectory);
+    if (*sweep) return run_sweep_command(sweep_flags, v0_grid, log, zeta_grid, out_path, threads);
+    if (*show) return run_scene_show(show_scene, show_json);
+    if (*integrators) {
+      for (IntegratorKind k : all_integrators()) {
+        std::cout << to_string(k);
+        if (verbose) std::cout << "\t" << describe(k);
+        std::cout << "\n";
+      }
+      return 0;
+    }
+    if (*laws) {
+      for (LawKind k : all_laws()) std::cout << to_string(k) << "\n";
+      return 0;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "ivv: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ivv: failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,87 @@
+#include "app/result_json.h"
+
+#include <cmath>
+
+namespace ivv {
+namespace {
+// JSON has no infinity: an absent dashpot is null.
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
+}  // namespace
+
+nlohmann::json scene_json(const Scene& s, const DerivedParameters& p) {
+  return {
+      {"name", s.name},
+      {"mass", s.mass},
+      {"radius", s.radius},
+      {"impactor_youngs_modulus", s.impactor_youngs_modulus},
+      {"impactor_poisson_ratio", s.impactor_poisson_ratio},
+      {"target_youngs_modulus", s.target_youngs_modulus},
+      {"target_poisson_ratio", s.target_poisson_ratio},
+      {"yield_strength", s.yield_strength},
+      {"v0", s.velocity},
+      {"E_star", p.E_star},
+      {"K_h", p.K_h},
+      {"z_y", p.z_y},
+      {"K_y", p.K_y},
+      {"omega0", p.omega0},
+      {"zeta", p.zeta},
+      {"c", finite_or_null(p.c)},
+      {"v_yield", p.v_yield},
+  };
+}
+
+nlohmann::json result_json(const ImpactResult& r) {
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& ev : r.events) {
+    events.push_back({{"kind", to_string(ev.kind)}, {"t", ev.t}, {"z", ev.z}, {"alpha", ev.alpha},
+                      {"force", ev.force}});
+  }
+  nlohmann::json j = {
+      {"status", to_string(r.status)},
+      {"separated", r.separated()},
+      {"e", r.e},
+      {"e_poisson", r.e_poisson},
+      {"e_energetic", r.e_energetic},
+      {"F_max", r.F_max},
+      {"t_F_max", r.t_F_max},
+      {"z_max", r.z_max},
+      {"t_z_max", r.t_z_max},
+      {"alpha_max", r.alpha_max},
+      {"t_alpha_max", r.t_alpha_max},
+      {"z_perm", r.z_perm},
+      {"y_final", r.y_final},
+      {"t_contact", r.t_contact},
+      {"rebound_velocity", r.rebound_velocity},
+      {"impulse", r.impulse},
+      {"impulse_compression", r.impulse_compression},
+      {"energy",
+       {{"initial", r.energy.initial},
+        {"final", r.energy.final},
+        {"stored", r.energy.stored},
+        {"plastic", r.energy.plastic},
+        {"viscous", r.energy.viscous},
+        {"residual", r.energy.residual},
+        {"plastic_integrated", r.energy.plastic_integrated}}},
+      {"steps", r.steps},
+      {"rhs_evaluations", r.rhs_evaluations},
+      {"events", events},
+  };
+  if (!r.reason.empty()) j["reason"] = r.reason;
+  return j;
+}
+
+nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult& r) {
+  const DerivedParameters p = derive(req.scene);
+  nlohmann::json request = {{"law", to_string(req.law)},
+                            {"integrator", to_string(req.integrator)},
+                            {"rtol", req.options.rtol},
+                            {"atol", req.options.atol}};
+  if (req.integrator == IntegratorKind::rk4) request["dt"] = req.options.fixed_dt();
+  if (req.law == LawKind::hunt_crossley) {
+    request["hc_k"] = req.hunt_crossley.K.value_or(p.K_h);
+    request["hc_mu"] = req.hunt_crossley.mu;
+  }
+  return {{"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
+}
+
+}  // namespace ivv

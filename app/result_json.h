@@ -1,0 +1,17 @@
+// JSON views of scenes and results (the `ivv simulate --json` contract of SPEC §5).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "solver/result.h"
+#include "solver/scene.h"
+#include "solver/simulate.h"
+
+namespace ivv {
+
+nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
+nlohmann::json result_json(const ImpactResult& r);
+// {"scene": ..., "request": ..., "result": ...}
+nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult& r);
+
+}  // namespace ivv

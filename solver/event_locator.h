@@ -1,0 +1,68 @@
+// Event location: the earliest signed zero crossing of g on a step's interpolant.
+//
+// An event is a scalar function g(t) of the solution and a direction. A crossing in a
+// subinterval [a, b] means g(a) is strictly on the pre-event side and g(b) is on the
+// post-event side or zero (rising: g(a) < 0 <= g(b); falling: g(a) > 0 >= g(b)). A zero exactly
+// at the start of a step therefore never fires again after a restart there.
+//
+// The step [t0, t1] is first sampled at `samples` equal subintervals so that two roots inside
+// one step (g returning to its pre-event side before t1) are not missed; the first bracketing
+// subinterval is then solved with TOMS 748 (Alefeld, Potra & Shi, ACM TOMS 21:327, 1995;
+// boost::math::tools::toms748_solve) to the precision of T. The returned time is the post-event
+// end of the final bracket, so the state there is on the event's far side.
+#pragma once
+
+#include <boost/math/tools/roots.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+namespace ivv {
+
+enum class Direction { rising, falling };
+
+template <class T>
+bool is_pre_event(const T& g, Direction d) {
+  return d == Direction::rising ? g < 0 : g > 0;
+}
+
+struct LocatorOptions {
+  int samples = 4;  // subintervals probed per step
+  // Bits of the bracket to resolve; 0 means all but 3 of T's digits.
+  int bits = 0;
+  std::uintmax_t max_iterations = 200;
+};
+
+// g: callable T -> T (the event function evaluated on the interpolant).
+// g0: g(t0), already known. Returns the event time in (t0, t1], or nullopt.
+template <class T, class G>
+std::optional<T> locate_first_crossing(G&& g, const T& t0, const T& t1, const T& g0, Direction dir,
+                                       const LocatorOptions& opt = {}) {
+  if (!is_pre_event(g0, dir)) return std::nullopt;
+  const int n = opt.samples < 1 ? 1 : opt.samples;
+  T a = t0;
+  T ga = g0;
+  for (int i = 1; i <= n; ++i) {
+    const T b = (i == n) ? t1 : T(t0 + (t1 - t0) * i / n);
+    const T gb = g(b);
+    if (!is_pre_event(gb, dir)) {
+      if (gb == 0) return b;
+      const int digits = std::numeric_limits<T>::digits;
+      const int bits = opt.bits > 0 ? opt.bits : digits - 3;
+      boost::math::tools::eps_tolerance<T> tol(bits);
+      std::uintmax_t iterations = opt.max_iterations;
+      const auto bracket =
+          boost::math::tools::toms748_solve(g, a, b, ga, gb, tol, iterations);
+      // pick the end of the final bracket on the post-event side
+      const T lo = bracket.first, hi = bracket.second;
+      if (lo == hi) return hi;
+      return is_pre_event(g(hi), dir) ? lo : hi;
+    }
+    a = b;
+    ga = gb;
+  }
+  return std::nullopt;
+}
+
+}  // namespace ivv

@@ -1,0 +1,147 @@
+// The impact equations in the normalised variables of paper eq. 26.
+//
+// Physical model (paper eqs 1-4):  m alpha'' = -F,  c y' = F,  z = alpha - y,  F = f(z) >= 0.
+// With tau = omega0 t, alpha = (v0/omega0) a, y = (v0/omega0) y_bar, F = m v0 omega0 F_bar:
+//
+//   a' = w,   w' = -F_bar,   y_bar' = 2 zeta F_bar          (' = d/dtau)
+//
+// since m omega0 / c = 2 zeta. Initial state a = y = 0, w = 1. Without a dashpot (c = inf)
+// y is identically zero and is not integrated: the dynamical state is (a, w).
+//
+// Three quadratures ride along (they are outputs, not dynamics), in units of m v0 and m v0^2:
+//   J   = int F_bar dtau            impulse
+//   Wa  = int F_bar w dtau          work of the contact force on the impactor
+//   Wv  = int 2 zeta F_bar^2 dtau   dashpot dissipation (only with a dashpot)
+// Wa is not an invariant of a Runge-Kutta method (1/2 w^2 + Wa is quadratic in the state), so
+// comparing it with 1/2(1 - w_f^2) measures integration error; likewise Wv closes the ledger.
+#pragma once
+
+#include <array>
+#include <complex>
+#include <cstddef>
+
+#include "solver/law.h"
+
+namespace ivv {
+
+template <class Law, bool Dashpot, class T = double>
+struct ImpactSystem {
+  static_assert(!(Dashpot && Law::rate_dependent),
+                "a rate-dependent law carries its own damping and is used without a dashpot");
+
+  static constexpr bool has_dashpot = Dashpot;
+  static constexpr bool rate_dependent = Law::rate_dependent;
+  static constexpr std::size_t N = Dashpot ? 6 : 4;
+  using value_type = T;
+  using state_type = std::array<T, N>;
+
+  // state indices
+  static constexpr std::size_t A = 0;  // normalised impactor displacement
+  static constexpr std::size_t W = 1;  // normalised impactor velocity
+  static constexpr std::size_t Y = 2;  // normalised dashpot displacement (Dashpot only)
+  static constexpr std::size_t J = Dashpot ? 3 : 2;
+  static constexpr std::size_t WA = J + 1;
+  static constexpr std::size_t WV = Dashpot ? 5 : N;  // == N: absent
+
+  Law law;
+  Branch<T> branch;
+  double length = 1.0;    // v0/omega0 [m]
+  double velocity = 1.0;  // v0 [m/s]
+  double force_scale = 1.0;  // m v0 omega0 [N]
+  double two_zeta = 0.0;  // 2 zeta (Dashpot only)
+  mutable long rhs_evaluations = 0;
+
+  static state_type initial_state() {
+    state_type x{};
+    x[W] = T(1);
+    return x;
+  }
+
+  T z(const state_type& x) const {
+    if constexpr (Dashpot) return x[A] - x[Y];
+    return x[A];
+  }
+  // Normalised force on the current branch (smooth continuation; may be < 0 past separation).
+  T force(const state_type& x) const {
+    return law.force(branch, T(length * z(x)), T(velocity * x[W])) / force_scale;
+  }
+  // dz/dtau = w - 2 zeta F_bar.
+  T z_rate(const state_type& x) const {
+    if constexpr (Dashpot) return x[W] - two_zeta * force(x);
+    return x[W];
+  }
+
+  void operator()(const state_type& x, state_type& dxdt, T /*tau*/) const {
+    ++rhs_evaluations;
+    const T F = force(x);
+    dxdt[A] = x[W];
+    dxdt[W] = -F;
+    if constexpr (Dashpot) {
+      dxdt[Y] = two_zeta * F;
+      dxdt[WV] = two_zeta * F * F;
+    }
+    dxdt[J] = F;
+    dxdt[WA] = F * x[W];
+  }
+
+  // Normalised partial derivatives of F_bar: dF_bar/dz_bar and dF_bar/dw.
+  T stiffness(const state_type& x) const {
+    return law.stiffness(branch, T(length * z(x)), T(velocity * x[W])) * length / force_scale;
+  }
+  T rate_stiffness(const state_type& x) const {
+    if constexpr (Law::rate_dependent)
+      return law.rate_stiffness(branch, T(length * z(x)), T(velocity * x[W])) * velocity /
+             force_scale;
+    return T(0);
+  }
+
+  // d F_bar / d tau along the solution (for the peak-force event of rate-dependent laws).
+  T force_rate(const state_type& x) const {
+    return stiffness(x) * z_rate(x) - rate_stiffness(x) * force(x);
+  }
+
+  // Full Jacobian d(dxdt)/dx, row-major into any matrix with m(i, j) access.
+  template <class Matrix>
+  void jacobian(const state_type& x, Matrix& m) const {
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j) m(i, j) = T(0);
+    const T F = force(x);
+    const T k = stiffness(x);
+    const T kv = rate_stiffness(x);
+    // dF/dx: z = a - y, rate argument = w
+    std::array<T, N> dF{};
+    dF[A] = k;
+    dF[W] = kv;
+    if constexpr (Dashpot) dF[Y] = -k;
+    m(A, W) = T(1);
+    for (std::size_t j = 0; j < N; ++j) {
+      m(W, j) = -dF[j];
+      m(J, j) = dF[j];
+      m(WA, j) = dF[j] * x[W];
+      if constexpr (Dashpot) {
+        m(Y, j) = two_zeta * dF[j];
+        m(WV, j) = 2 * two_zeta * F * dF[j];
+      }
+    }
+    m(WA, W) += F;
+  }
+
+  // Non-zero eigenvalues of the linearised dynamics: roots of lambda^2 + b lambda + k with
+  // b = 2 zeta k (dashpot) or dF/dw (rate law). Used for explicit stability checks.
+  std::array<std::complex<double>, 2> eigenvalues(const state_type& x) const {
+    const double k = static_cast<double>(stiffness(x));
+    const double b = Dashpot ? two_zeta * k : static_cast<double>(rate_stiffness(x));
+    const std::complex<double> disc = std::sqrt(std::complex<double>(b * b - 4 * k));
+    return {(-b + disc) / 2.0, (-b - disc) / 2.0};
+  }
+
+  // Energy that could still come back as rebound, normalised by m v0^2: 1/2 w^2 + U(z).
+  // The final rebound speed |w_f| <= sqrt(2 * this) whatever happens next.
+  T recoverable_energy(const state_type& x) const {
+    const T u = law.stored_energy(branch, T(length * z(x))) /
+                (force_scale * length);  // m v0 omega0 * v0/omega0 = m v0^2
+    return T(0.5) * x[W] * x[W] + u;
+  }
+};
+
+}  // namespace ivv

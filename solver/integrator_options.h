@@ -1,0 +1,35 @@
+// Options shared by every integrator. Tolerances apply to the normalised state of
+// impact_system.h (velocities in units of v0, displacements in v0/omega0, time in 1/omega0),
+// so a tolerance means the same thing for a 1 mg bead at 1e-6 m/s and a 1 t mass at 100 m/s.
+#pragma once
+
+#include <string>
+
+#include "solver/event_locator.h"
+
+namespace ivv {
+
+struct IntegratorOptions {
+  double rtol = 1e-10;        // relative error per step (adaptive integrators)
+  double atol = 1e-12;        // absolute error per step, normalised units
+  double dt = 0.0;            // fixed step in tau: rk4, and dp45 with fixed_step (0 = default)
+  bool fixed_step = false;    // dp45 only: no error control (convergence studies)
+  double initial_dt = 1e-4;   // first trial step in tau (adaptive integrators)
+  long max_steps = 2'000'000;  // accepted steps per impact before giving up
+  double tau_max = 1e8;       // normalised time limit before giving up
+  bool locate_events = true;  // false: events detected only at step ends (demonstrations)
+  // Declare capture (no rebound, e = 0) once the rebound COR still attainable from the
+  // remaining energy, sqrt(w^2 + 2 U), is below this.
+  double capture_cor = 1e-9;
+  LocatorOptions locator;
+
+  // Default fixed step in tau for rk4: its global error ~ C h^4 with C = O(1) in the
+  // normalised variables, so h = 1e-3 leaves the COR error near 1e-9.
+  static constexpr double default_fixed_dt = 1e-3;
+  double fixed_dt() const { return dt > 0 ? dt : default_fixed_dt; }
+
+  // Returns an empty string when valid, else a message naming the option.
+  std::string invalid_reason() const;
+};
+
+}  // namespace ivv

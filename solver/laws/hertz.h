@@ -1,0 +1,60 @@
+// Hertz contact law (paper eq. 5; Johnson, Contact Mechanics, 1985, §4.2):
+//
+//   F = K_h z^{3/2},   K_h = (4/3) sqrt(R) E*   [N/m^1.5],  z [m],  F [N]
+//
+// Elastic: loading and unloading follow the same curve, so the hysteresis area is zero and
+// the coefficient of restitution without a dashpot is exactly 1.
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "solver/law.h"
+
+namespace ivv {
+
+struct HertzLaw {
+  static constexpr std::string_view name = "hertz";
+  static constexpr bool rate_dependent = false;
+
+  double K_h = 0.0;  // [N/m^1.5]
+
+  template <class T>
+  T force(const Branch<T>&, const T& z, const T&) const {
+    return K_h * signed_pow_1_5(z);
+  }
+  template <class T>
+  T stiffness(const Branch<T>&, const T& z, const T&) const {
+    using std::abs;
+    using std::sqrt;
+    return 1.5 * K_h * sqrt(abs(z));
+  }
+  template <class T>
+  T rate_stiffness(const Branch<T>&, const T&, const T&) const {
+    return T(0);
+  }
+  template <class T>
+  std::optional<double> segment_end(const Branch<T>&) const {
+    return std::nullopt;
+  }
+  template <class T>
+  void next_segment(Branch<T>&) const {}
+  template <class T>
+  void begin_unloading(Branch<T>& b, const T& z_m) const {
+    b.phase = Phase::unloading;
+    b.z_max = z_m;
+    b.z_perm = T(0);
+  }
+  // (2/5) K_h z^{5/2}
+  template <class T>
+  T stored_energy(const Branch<T>&, const T& z) const {
+    using std::sqrt;
+    return z > 0 ? T(0.4 * K_h * z * z * sqrt(z)) : T(0);
+  }
+  template <class T>
+  std::optional<double> hysteresis_work(const Branch<T>&) const {
+    return 0.0;
+  }
+};
+
+}  // namespace ivv

@@ -1,0 +1,64 @@
+// Hunt-Crossley contact law (paper eq. 27; Hunt & Crossley, J. Appl. Mech. 42:440, 1975):
+//
+//   F = K alpha^{3/2} (1 + mu alpha_dot)
+//
+// on the impactor displacement alpha [m] and velocity alpha_dot [m/s], with K [N/m^1.5]
+// and mu [s/m]. It carries its own damping, so it is used without the series dashpot
+// (then z = alpha and the rate argument is alpha_dot). Loading and unloading share the
+// formula; the loop area is not known in closed form, so the energy ledger integrates it.
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "solver/law.h"
+
+namespace ivv {
+
+struct HuntCrossleyLaw {
+  static constexpr std::string_view name = "hunt-crossley";
+  static constexpr bool rate_dependent = true;
+
+  double K = 0.0;   // [N/m^1.5]
+  double mu = 0.0;  // [s/m]
+
+  template <class T>
+  T force(const Branch<T>&, const T& z, const T& v) const {
+    return K * signed_pow_1_5(z) * (1 + mu * v);
+  }
+  template <class T>
+  T stiffness(const Branch<T>&, const T& z, const T& v) const {
+    using std::abs;
+    using std::sqrt;
+    return 1.5 * K * sqrt(abs(z)) * (1 + mu * v);
+  }
+  template <class T>
+  T rate_stiffness(const Branch<T>&, const T& z, const T&) const {
+    return K * mu * signed_pow_1_5(z);
+  }
+  template <class T>
+  std::optional<double> segment_end(const Branch<T>&) const {
+    return std::nullopt;
+  }
+  template <class T>
+  void next_segment(Branch<T>&) const {}
+  template <class T>
+  void begin_unloading(Branch<T>& b, const T& z_m) const {
+    b.phase = Phase::unloading;
+    b.z_max = z_m;
+    b.z_perm = T(0);
+  }
+  // The elastic part (2/5) K z^{5/2} bounds the rebound energy: on restitution
+  // alpha_dot < 0, so the damping factor (1 + mu alpha_dot) < 1 only removes energy.
+  template <class T>
+  T stored_energy(const Branch<T>&, const T& z) const {
+    using std::sqrt;
+    return z > 0 ? T(0.4 * K * z * z * sqrt(z)) : T(0);
+  }
+  template <class T>
+  std::optional<double> hysteresis_work(const Branch<T>&) const {
+    return std::nullopt;
+  }
+};
+
+}  // namespace ivv

@@ -1,0 +1,73 @@
+// The outcome of one impact, in SI units.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ivv {
+
+enum class ImpactStatus {
+  separated,  // the contact force returned to zero: a rebound (possibly with e ~ 0)
+  captured,   // no rebound: the remaining energy bounds e below the capture threshold
+  failed      // see ImpactResult::reason
+};
+
+enum class FailureKind { none, law_domain, integrator };
+
+enum class EventKind { onset, yield, max_compression, max_displacement, peak_force, separation,
+                       capture };
+
+std::string_view to_string(ImpactStatus s);
+std::string_view to_string(EventKind k);
+
+struct ImpactEvent {
+  EventKind kind;
+  double t;      // [s]
+  double z;      // spring deformation [m]
+  double alpha;  // impactor displacement [m]
+  double force;  // [N]
+};
+
+// Energy ledger (SPEC §1): initial = final + stored + plastic + viscous + residual.
+struct EnergyLedger {
+  double initial = 0.0;  // 1/2 m v0^2 [J]
+  double final = 0.0;    // 1/2 m alpha_dot_f^2 [J]
+  double stored = 0.0;   // spring energy still stored at the end (capture only) [J]
+  double plastic = 0.0;  // hysteresis loop area of the spring, closed form (integrated for
+                         // laws without one, e.g. Hunt-Crossley) [J]
+  double viscous = 0.0;  // int F^2/c dt, integrated [J]
+  double residual = 0.0;
+  bool plastic_integrated = false;  // true when `plastic` came from quadrature
+};
+
+struct ImpactResult {
+  ImpactStatus status = ImpactStatus::failed;
+  FailureKind failure = FailureKind::none;
+  std::string reason;  // why it failed (empty otherwise)
+
+  double e = 0.0;            // Newton COR, -alpha_dot(t_f)/v0
+  double e_poisson = 0.0;    // restitution impulse / compression impulse
+  double e_energetic = 0.0;  // sqrt(restitution work / compression work)
+  double F_max = 0.0;        // [N]
+  double t_F_max = 0.0;      // [s]
+  double z_max = 0.0;        // maximum spring deformation z_m [m]
+  double t_z_max = 0.0;      // [s]
+  double alpha_max = 0.0;    // maximum impactor displacement alpha_c [m]
+  double t_alpha_max = 0.0;  // [s]
+  double z_perm = 0.0;       // permanent spring set z_f [m]
+  double y_final = 0.0;      // dashpot displacement at the end [m]
+  double t_contact = 0.0;    // [s] (capture: time the capture criterion was met)
+  double rebound_velocity = 0.0;  // alpha_dot at the end [m/s] (< 0: moving away)
+  double impulse = 0.0;           // int F dt [N s]
+  double impulse_compression = 0.0;  // int_0^{t_c} F dt [N s]
+  EnergyLedger energy;
+  long steps = 0;
+  long rhs_evaluations = 0;
+  std::vector<ImpactEvent> events;
+
+  bool separated() const { return status == ImpactStatus::separated; }
+  bool ok() const { return status != ImpactStatus::failed; }
+};
+
+}  // namespace ivv

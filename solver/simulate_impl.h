@@ -1,0 +1,152 @@
+// Internals of simulate(): the typed run for one stepper and its conversion to SI units.
+// Included by one translation unit per integrator (integrators_*.cc) to spread compile time.
+#pragma once
+
+#include <cmath>
+
+#include "solver/impact_driver.h"
+#include "solver/impact_system.h"
+#include "solver/laws/elastoplastic.h"
+#include "solver/laws/hertz.h"
+#include "solver/laws/hunt_crossley.h"
+#include "solver/laws/linearized.h"
+#include "solver/simulate.h"
+
+namespace ivv::detail {
+
+template <class System>
+ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, const Scene& scene,
+                         const DerivedParameters& p) {
+  const double L = sys.length, V = scene.velocity, Fs = sys.force_scale;
+  const double Ts = 1.0 / p.omega0;
+  const double E = scene.mass * V * V;
+  ImpactResult r;
+  r.status = run.status;
+  r.failure = run.failure;
+  r.reason = run.reason;
+  r.steps = run.steps;
+  r.rhs_evaluations = sys.rhs_evaluations;
+  for (const auto& ev : run.events) {
+    r.events.push_back({ev.kind, ev.tau * Ts, sys.z(ev.x) * L, ev.x[System::A] * L,
+                        ev.force * Fs});
+  }
+  const auto& x = run.x_end;
+  r.t_contact = run.tau_end * Ts;
+  r.rebound_velocity = x[System::W] * V;
+  r.z_max = run.branch.z_max;
+  r.t_z_max = run.tau_z_max * Ts;
+  r.F_max = run.F_max * Fs;
+  r.t_F_max = run.tau_F_max * Ts;
+  r.z_perm = run.branch.z_perm;
+  if constexpr (System::has_dashpot) r.y_final = x[System::Y] * L;
+  if (run.has_max_displacement) {
+    r.alpha_max = run.x_alpha_max[System::A] * L;
+    r.t_alpha_max = run.tau_alpha_max * Ts;
+  } else {
+    r.alpha_max = x[System::A] * L;
+    r.t_alpha_max = r.t_contact;
+  }
+  r.impulse = x[System::J] * scene.mass * V;
+  if (run.status == ImpactStatus::failed) return r;
+
+  const double w_f = x[System::W];
+  r.e = run.status == ImpactStatus::separated ? -w_f : 0.0;
+  if (run.has_max_displacement) {
+    const double J_c = run.x_alpha_max[System::J], J_f = x[System::J];
+    const double Wa_c = run.x_alpha_max[System::WA], Wa_f = x[System::WA];
+    r.impulse_compression = J_c * scene.mass * V;
+    r.e_poisson = (J_f - J_c) / J_c;
+    r.e_energetic = std::sqrt(std::max(0.0, (Wa_c - Wa_f) / Wa_c));
+  }
+  EnergyLedger& led = r.energy;
+  led.initial = 0.5 * E;
+  led.final = 0.5 * E * w_f * w_f;
+  led.stored = sys.law.stored_energy(run.branch, sys.z(x) * L);
+  if constexpr (System::has_dashpot) led.viscous = x[System::WV] * E;
+  if (auto closed = sys.law.hysteresis_work(run.branch)) {
+    led.plastic = *closed;
+  } else {
+    led.plastic = x[System::WA] * E - led.viscous - led.stored;
+    led.plastic_integrated = true;
+  }
+  led.residual = led.initial - led.final - led.stored - led.plastic - led.viscous;
+  return r;
+}
+
+template <template <class> class Stepper, class Law, bool Dashpot>
+ImpactResult run_typed(const Law& law, const SimulationRequest& req, const DerivedParameters& p,
+                       std::vector<TrajectoryPoint>* trajectory) {
+  using System = ImpactSystem<Law, Dashpot>;
+  const Scales k = scales(req.scene, p);
+  System sys;
+  sys.law = law;
+  sys.length = k.length;
+  sys.velocity = k.velocity;
+  sys.force_scale = k.force;
+  sys.two_zeta = Dashpot ? 2.0 * p.zeta : 0.0;
+  SampleObserver<System> observer;
+  if (trajectory) {
+    observer = [trajectory, k](double tau, const typename System::state_type& x,
+                               const System& s) {
+      const double F = s.force(x);
+      TrajectoryPoint pt;
+      pt.tau = tau;
+      pt.t = tau * k.time;
+      pt.alpha = x[System::A] * k.length;
+      pt.alpha_dot = x[System::W] * k.velocity;
+      pt.y = 0.0;
+      if constexpr (Dashpot) pt.y = x[System::Y] * k.length;
+      pt.z = s.z(x) * k.length;
+      pt.force = std::max(0.0, F) * k.force;
+      pt.alpha_bar = x[System::A];
+      pt.force_bar = std::max(0.0, F);
+      trajectory->push_back(pt);
+    };
+  }
+  const auto run =
+      run_impact<Stepper<System>>(sys, req.options, trajectory ? &observer : nullptr);
+  return to_physical(run, sys, req.scene, p);
+}
+
+template <template <class> class Stepper>
+ImpactResult simulate_with(const SimulationRequest& req, const DerivedParameters& p,
+                           std::vector<TrajectoryPoint>* trajectory) {
+  const bool dashpot = p.has_dashpot();
+  auto dispatch = [&](const auto& law) {
+    using Law = std::decay_t<decltype(law)>;
+    if constexpr (Law::rate_dependent) {
+      return run_typed<Stepper, Law, false>(law, req, p, trajectory);
+    } else {
+      return dashpot ? run_typed<Stepper, Law, true>(law, req, p, trajectory)
+                     : run_typed<Stepper, Law, false>(law, req, p, trajectory);
+    }
+  };
+  switch (req.law) {
+    case LawKind::hertz:
+      return dispatch(HertzLaw{p.K_h});
+    case LawKind::elastoplastic:
+      return dispatch(ElastoplasticLaw{p.K_h, p.z_y, p.K_y});
+    case LawKind::linearized:
+      return dispatch(LinearizedLaw{p.K_h, p.K_y});
+    case LawKind::hunt_crossley:
+      return dispatch(
+          HuntCrossleyLaw{req.hunt_crossley.K.value_or(p.K_h), req.hunt_crossley.mu});
+  }
+  return {};
+}
+
+// Defined in integrators_*.cc, one per integrator.
+ImpactResult simulate_odeint_dopri5(const SimulationRequest&, const DerivedParameters&,
+                                    std::vector<TrajectoryPoint>*);
+ImpactResult simulate_odeint_rosenbrock4(const SimulationRequest&, const DerivedParameters&,
+                                         std::vector<TrajectoryPoint>*);
+ImpactResult simulate_rk4(const SimulationRequest&, const DerivedParameters&,
+                          std::vector<TrajectoryPoint>*);
+ImpactResult simulate_dp45(const SimulationRequest&, const DerivedParameters&,
+                           std::vector<TrajectoryPoint>*);
+ImpactResult simulate_gsl_rk8pd(const SimulationRequest&, const DerivedParameters&,
+                                std::vector<TrajectoryPoint>*);
+ImpactResult simulate_gsl_msbdf(const SimulationRequest&, const DerivedParameters&,
+                                std::vector<TrajectoryPoint>*);
+
+}  // namespace ivv::detail

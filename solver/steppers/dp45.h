@@ -1,0 +1,163 @@
+// Dormand-Prince 5(4) (Dormand & Prince, J. Comput. Appl. Math. 6:19, 1980), written from its
+// Butcher tableau; shares no code with odeint. Seven stages with FSAL (the last stage is f at
+// the new point), a fifth-order solution and an embedded fourth-order error estimate:
+//
+//   err_i = h sum_j (b_j - b*_j) k_j,   ||err|| = rms_i err_i / (atol + rtol max(|x0_i|, |x1_i|))
+//
+// Step accepted when ||err|| <= 1; next step h * clamp(0.9 ||err||^{-1/5}, 0.2, 5).
+// Dense output: the fourth-order continuous extension of Hairer, Norsett & Wanner, Solving ODEs I
+// (2nd ed., §II.6; coefficients d_j of their DOPRI5 code):
+//   x(t0 + theta h) = x0 + theta (r1 + (1 - theta)(r2 + theta (r3 + (1 - theta) r4)))
+//   r1 = x1 - x0, r2 = h k1 - r1, r3 = r1 - h k7 - r2, r4 = h sum_j d_j k_j.
+// With fixed_step the error control is off and h = dt (convergence studies).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "solver/integrator_options.h"
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+namespace dp45_tableau {
+inline constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
+inline constexpr double a21 = 1.0 / 5;
+inline constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
+inline constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
+inline constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
+                        a54 = -212.0 / 729;
+inline constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
+                        a64 = 49.0 / 176, a65 = -5103.0 / 18656;
+// fifth-order weights (= row 7, FSAL)
+inline constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192,
+                        b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+// b - b* (b* the fourth-order weights)
+inline constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
+                        e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+// dense output
+inline constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 32700410799,
+                        d4 = -10690763975.0 / 1880347072, d5 = 701980252875.0 / 199316789632,
+                        d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
+}  // namespace dp45_tableau
+
+template <class System>
+class Dp45Stepper {
+ public:
+  using state_type = typename System::state_type;
+  using T = typename System::value_type;
+  static constexpr std::string_view name = "dp45";
+  static constexpr bool dense_output = true;
+  static constexpr int order = 5;
+
+  explicit Dp45Stepper(const IntegratorOptions& opt)
+      : rtol_(opt.rtol), atol_(opt.atol), fixed_(opt.fixed_step),
+        h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
+
+  void start(const System& sys, T t, const state_type& x) {
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, k7_, t1_);
+  }
+
+  StepResult step(const System& sys) {
+    using namespace dp45_tableau;
+    t0_ = t1_;
+    x0_ = x1_;
+    k1_ = k7_;
+    const std::size_t n = x0_.size();
+    state_type tmp, err;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      const T h = h_;
+      for (std::size_t i = 0; i < n; ++i) tmp[i] = x0_[i] + h * a21 * k1_[i];
+      sys(tmp, k2_, t0_ + c2 * h);
+      for (std::size_t i = 0; i < n; ++i) tmp[i] = x0_[i] + h * (a31 * k1_[i] + a32 * k2_[i]);
+      sys(tmp, k3_, t0_ + c3 * h);
+      for (std::size_t i = 0; i < n; ++i)
+        tmp[i] = x0_[i] + h * (a41 * k1_[i] + a42 * k2_[i] + a43 * k3_[i]);
+      sys(tmp, k4_, t0_ + c4 * h);
+      for (std::size_t i = 0; i < n; ++i)
+        tmp[i] = x0_[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
+      sys(tmp, k5_, t0_ + c5 * h);
+      for (std::size_t i = 0; i < n; ++i)
+        tmp[i] = x0_[i] + h * (a61 * k1_[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] +
+                               a65 * k5_[i]);
+      sys(tmp, k6_, t0_ + h);
+      for (std::size_t i = 0; i < n; ++i)
+        x1_[i] = x0_[i] + h * (b1 * k1_[i] + b3 * k3_[i] + b4 * k4_[i] + b5 * k5_[i] +
+                               b6 * k6_[i]);
+      sys(x1_, k7_, t0_ + h);
+      if (fixed_) {
+        t1_ = t0_ + h;
+        ++steps_;
+        return StepResult::success();
+      }
+      T sum = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        err[i] = h * (e1 * k1_[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] +
+                      e7 * k7_[i]);
+        using std::abs;
+        using std::max;
+        const T scale = atol_ + rtol_ * max(abs(x0_[i]), abs(x1_[i]));
+        sum += (err[i] / scale) * (err[i] / scale);
+      }
+      using std::pow;
+      using std::sqrt;
+      const T norm = sqrt(sum / T(n));
+      const T factor =
+          norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
+      if (!(norm == norm)) {  // NaN: the state left the law's domain
+        h_ = h * T(0.2);
+        ++rejected_;
+        continue;
+      }
+      if (norm <= 1) {
+        t1_ = t0_ + h;
+        h_ = h * factor;
+        ++steps_;
+        return StepResult::success();
+      }
+      h_ = h * factor;
+      ++rejected_;
+      if (h_ <= 1e-14 * (1 + (t0_ < 0 ? -t0_ : t0_))) break;
+    }
+    std::ostringstream os;
+    os << "dp45: step size underflow at tau = " << static_cast<double>(t0_)
+       << " (cannot meet rtol = " << static_cast<double>(rtol_) << ")";
+    return StepResult::failure(os.str());
+  }
+
+  void interpolate(const System&, T t, state_type& out) const {
+    using namespace dp45_tableau;
+    const T h = t1_ - t0_;
+    const T th = (t - t0_) / h;
+    const T om = 1 - th;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const T r1 = x1_[i] - x0_[i];
+      const T r2 = h * k1_[i] - r1;
+      const T r3 = r1 - h * k7_[i] - r2;
+      const T r4 = h * (d1 * k1_[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] +
+                        d7 * k7_[i]);
+      out[i] = x0_[i] + th * (r1 + om * (r2 + th * (r3 + om * r4)));
+    }
+  }
+
+  T t0() const { return t0_; }
+  T t1() const { return t1_; }
+  const state_type& x0() const { return x0_; }
+  const state_type& x1() const { return x1_; }
+  long steps() const { return steps_; }
+  long rejected() const { return rejected_; }
+
+ private:
+  T rtol_, atol_;
+  bool fixed_;
+  T h_;
+  T t0_{}, t1_{};
+  state_type x0_{}, x1_{};
+  state_type k1_{}, k2_{}, k3_{}, k4_{}, k5_{}, k6_{}, k7_{};
+  long steps_ = 0, rejected_ = 0;
+};
+
+}  // namespace ivv

@@ -1,0 +1,63 @@
+// Boost.Odeint Dormand-Prince 5(4): controlled stepper with dense output
+// (runge_kutta_dopri5 wrapped by make_dense_output; Boost.Odeint documentation, "Dense output
+// steppers"). Error control uses odeint's max norm err_i / (atol + rtol |x_i|).
+#pragma once
+
+#include <boost/numeric/odeint.hpp>
+#include <exception>
+#include <string>
+
+#include "solver/integrator_options.h"
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+template <class System>
+class OdeintDopri5Stepper {
+ public:
+  using state_type = typename System::state_type;
+  using T = typename System::value_type;
+  static constexpr std::string_view name = "odeint-dopri5";
+  static constexpr bool dense_output = true;
+  static constexpr int order = 5;
+
+  explicit OdeintDopri5Stepper(const IntegratorOptions& opt)
+      : stepper_(boost::numeric::odeint::make_dense_output(
+            opt.atol, opt.rtol, boost::numeric::odeint::runge_kutta_dopri5<state_type>())),
+        dt_(opt.initial_dt) {}
+
+  void start(const System&, T t, const state_type& x) {
+    if (started_) dt_ = stepper_.current_time_step();
+    stepper_.initialize(x, t, dt_);
+    started_ = true;
+  }
+
+  StepResult step(const System& sys) {
+    auto rhs = [&sys](const state_type& x, state_type& dxdt, T t) { sys(x, dxdt, t); };
+    try {
+      stepper_.do_step(rhs);
+    } catch (const std::exception& e) {
+      return StepResult::failure(std::string("odeint-dopri5: ") + e.what());
+    }
+    ++steps_;
+    return StepResult::success();
+  }
+
+  void interpolate(const System&, T t, state_type& out) const { stepper_.calc_state(t, out); }
+
+  T t0() const { return stepper_.previous_time(); }
+  T t1() const { return stepper_.current_time(); }
+  const state_type& x0() const { return stepper_.previous_state(); }
+  const state_type& x1() const { return stepper_.current_state(); }
+  long steps() const { return steps_; }
+
+ private:
+  using dense_type = decltype(boost::numeric::odeint::make_dense_output(
+      0.0, 0.0, boost::numeric::odeint::runge_kutta_dopri5<state_type>()));
+  mutable dense_type stepper_;
+  T dt_;
+  bool started_ = false;
+  long steps_ = 0;
+};
+
+}  // namespace ivv
