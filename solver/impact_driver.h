@@ -291,6 +291,18 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
           break;
       }
     }
+    if (separated && xe[System::W] > 0) {
+      // F = 0 while the impactor still approaches is no rebound: z would grow again and the
+      // spring reload. In the exact solution the force is still (barely) positive; the
+      // integration error has exceeded it. Say so rather than return a negative COR.
+      std::ostringstream os;
+      os << Stepper::name << ": contact force reached zero at tau = " << static_cast<double>(te)
+         << " with the impactor still approaching (alpha_dot = +"
+         << static_cast<double>(xe[System::W])
+         << " v0): the integration error exceeds the remaining force; tighten --rtol or use "
+            "another integrator";
+      return fail(FailureKind::integrator, os.str());
+    }
     if (separated) {
       run.status = ImpactStatus::separated;
       run.tau_end = te;

@@ -1,0 +1,161 @@
+// The command line as a user meets it: exit codes, the JSON contract, files, bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+CliRun ivv(const std::string& args) {
+  const fs::path err_file = fs::temp_directory_path() / ("ivv_cli_test_" + std::to_string(getpid()));
+  const std::string cmd = std::string(IVV_BINARY) + " " + args + " 2>" + err_file.string();
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  std::ifstream in(err_file);
+  std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove(err_file);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err};
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("ivv_cli_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+TEST(Cli, SimulateJsonHasTheContractKeys) {
+  const CliRun r = ivv("simulate --scene paper --v0 1 --c 11440 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // exactly one JSON object
+  for (const char* key : {"e", "F_max", "t_contact", "z_max", "alpha_max", "z_perm", "separated"})
+    EXPECT_TRUE(j["result"].contains(key)) << key;
+  for (const char* key : {"initial", "final", "plastic", "viscous", "residual"})
+    EXPECT_TRUE(j["result"]["energy"].contains(key)) << key;
+  for (const char* key : {"E_star", "K_h", "z_y", "K_y", "zeta", "c", "v_yield"})
+    EXPECT_TRUE(j["scene"].contains(key)) << key;
+  EXPECT_TRUE(j["result"]["separated"].get<bool>());
+  EXPECT_GT(j["result"]["e"].get<double>(), 0.0);
+  EXPECT_LT(j["result"]["e"].get<double>(), 1.0);
+}
+
+TEST(Cli, SummaryIsReadable) {
+  const CliRun r = ivv("simulate --scene paper --v0 5 --zeta 0.1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("COR"), std::string::npos);
+  EXPECT_NE(r.out.find("F_max"), std::string::npos);
+}
+
+TEST(Cli, IntegratorsListsOnePerLine) {
+  const CliRun r = ivv("integrators");
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ngsl-rk8pd\ngsl-msbdf\n");
+}
+
+TEST(Cli, SceneShowPrintsDerivedParameters) {
+  const CliRun r = ivv("scene show --scene paper");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* s : {"E*", "K_h", "z_y", "K_y", "omega0", "v_y"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s;
+}
+
+TEST(Cli, TrajectoryCsvIsWritten) {
+  const fs::path csv = scratch("traj.csv");
+  const CliRun r = ivv("simulate --scene paper --v0 1 --zeta 0.1 --trajectory " + csv.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar");
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_GT(rows, 100);
+}
+
+TEST(Cli, SweepWritesTheGrid) {
+  const fs::path csv = scratch("grid.csv");
+  const CliRun r = ivv("sweep --scene paper --v0 0.5:5:4 --log --zeta 0,0.1,0.3 --out " + csv.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(csv);
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 1 + 4 * 3);
+}
+
+// Bad input: exit 2, one message naming the field, no output file.
+struct Bad {
+  const char* label;
+  std::string args;
+  std::string must_mention;
+};
+
+class CliBadInput : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(CliBadInput, ExitsTwoNamingTheField) {
+  const CliRun r = ivv(GetParam().args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().must_mention), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        Bad{"negative_v0", "simulate --scene paper --v0 -1", "--v0"},
+        Bad{"nan_v0", "simulate --scene paper --v0 nan", "--v0"},
+        Bad{"unknown_law", "simulate --scene paper --law plastic", "valid names: hertz"},
+        Bad{"unknown_integrator", "simulate --scene paper --integrator euler",
+            "valid names: odeint-dopri5"},
+        Bad{"missing_scene_file", "simulate --scene /no/such.toml", "cannot read"},
+        Bad{"linearized_outside_domain", "simulate --scene paper --v0 0.1 --law linearized",
+            "2.25 z_y"},
+        Bad{"hc_with_dashpot", "simulate --scene paper --law hunt-crossley --zeta 0.1", "--zeta"},
+        Bad{"negative_hc_mu", "simulate --scene paper --law hunt-crossley --hc-mu -1", "--hc-mu"},
+        Bad{"bad_rtol", "simulate --scene paper --rtol 2", "--rtol"},
+        Bad{"zeta_and_c", "simulate --scene paper --zeta 0.1 --c 100", "excludes"},
+        Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv",
+            "--v0"}),
+    [](const auto& info) { return std::string(info.param.label); });
+
+TEST(Cli, BadSweepLeavesNoFile) {
+  const fs::path csv = scratch("never.csv");
+  fs::remove(csv);
+  const CliRun r = ivv("sweep --scene paper --v0 1:5:3 --zeta 0.1,-1 --out " + csv.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--zeta"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST(Cli, BadSceneFileNamesTheField) {
+  const fs::path scene = scratch("bad.toml");
+  std::ofstream(scene) << "[impactor]\nmass = 0.5\nradius = 0.01\nyoungs_modulus = 207e9\n"
+                          "poisson_ratio = 0.5\n[target]\nyoungs_modulus = 7.9e9\n"
+                          "poisson_ratio = 0.3\nyield_strength = 2e8\n[impact]\nvelocity = 1\n";
+  const CliRun r = ivv("simulate --scene " + scene.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("impactor.poisson_ratio"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(-1, 0.5)"), std::string::npos) << r.err;
+}
+
+TEST(Cli, IntegratorFailureExitsOneWithReason) {
+  const CliRun r = ivv("simulate --scene paper --zeta 1000 --integrator rk4 --max-steps 1000");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("implicit integrator"), std::string::npos) << r.out;
+}
+
+}  // namespace

@@ -1,0 +1,165 @@
+// Contact laws by regime: loading, the yield kink, unloading, separation, history.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/laws/elastoplastic.h"
+#include "solver/laws/hertz.h"
+#include "solver/laws/hunt_crossley.h"
+#include "solver/laws/linearized.h"
+#include "solver/scene.h"
+
+namespace ivv {
+namespace {
+
+// Closed-form algebra in double: a few ulps of the largest term.
+constexpr double kAlgebra = 1e-12;
+
+DerivedParameters paper() { return derive(paper_scene()); }
+
+TEST(Hertz, LoadingFollowsThreeHalvesPowerAndUnloadsOnTheSameCurve) {
+  const HertzLaw law{2.0e9};
+  Branch<double> b;
+  const double z = 4e-5;
+  EXPECT_NEAR(law.force(b, z, 0.0), 2.0e9 * std::pow(z, 1.5), kAlgebra * 2e9 * std::pow(z, 1.5));
+  law.begin_unloading(b, z);
+  EXPECT_EQ(b.z_perm, 0.0);
+  const double half = 2.0e9 * std::pow(z / 2, 1.5);
+  EXPECT_NEAR(law.force(b, z / 2, 0.0), half, kAlgebra * half);
+  EXPECT_EQ(*law.hysteresis_work(b), 0.0);
+}
+
+TEST(Hertz, ContinuationBelowZeroIsOddSoSeparationIsASignChange) {
+  const HertzLaw law{1.0};
+  Branch<double> b;
+  EXPECT_LT(law.force(b, -1e-3, 0.0), 0.0);
+  EXPECT_EQ(law.force(b, -1e-3, 0.0), -law.force(b, 1e-3, 0.0));
+}
+
+TEST(Elastoplastic, KinkAtYieldIsContinuousWithMatchingSlope) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  Branch<double> b;
+  ASSERT_EQ(*law.segment_end(b), p.z_y);
+  const double hertz_at_yield = law.force(b, p.z_y, 0.0);
+  const double hertz_slope = law.stiffness(b, p.z_y, 0.0);
+  law.next_segment(b);
+  EXPECT_FALSE(law.segment_end(b).has_value());
+  EXPECT_NEAR(law.force(b, p.z_y, 0.0), hertz_at_yield, kAlgebra * hertz_at_yield);
+  // K_y is defined as the Hertz slope at z_y (eq. 12): the kink is in curvature only.
+  EXPECT_NEAR(law.stiffness(b, p.z_y, 0.0), hertz_slope, kAlgebra * hertz_slope);
+}
+
+TEST(Elastoplastic, UnloadingStartsAtPeakForceAndEndsAtPermanentSet) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  Branch<double> b;
+  law.next_segment(b);
+  const double z_m = 5 * p.z_y;
+  const double F_m = law.force(b, z_m, 0.0);
+  EXPECT_NEAR(F_m, p.K_y * 4 * p.z_y + p.K_h * std::pow(p.z_y, 1.5), kAlgebra * F_m);  // eq. 9
+  law.begin_unloading(b, z_m);
+  EXPECT_NEAR(law.force(b, z_m, 0.0), F_m, kAlgebra * F_m);  // eq. 10 at z = z_m
+  const double z_f = std::pow(std::pow(z_m, 1.5) - F_m / p.K_h, 2.0 / 3.0);
+  EXPECT_NEAR(b.z_perm, z_f, kAlgebra * z_m);
+  EXPECT_NEAR(law.force(b, z_f, 0.0), 0.0, kAlgebra * F_m);
+  EXPECT_LT(law.force(b, 0.99 * z_f, 0.0), 0.0);  // separation is a sign change
+  EXPECT_NEAR(law.stored_energy(b, z_f), 0.0, kAlgebra * F_m * z_m);
+}
+
+TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  Branch<double> b;
+  law.next_segment(b);
+  const double z_m = 3 * p.z_y;
+  law.begin_unloading(b, z_m);
+  // trapezoid-free check by Simpson on each piece with many panels (error ~ 1e-12 relative)
+  auto simpson = [](auto f, double a, double c, int n) {
+    const double h = (c - a) / n;
+    double s = f(a) + f(c);
+    for (int i = 1; i < n; ++i) s += f(a + i * h) * (i % 2 ? 4 : 2);
+    return s * h / 3;
+  };
+  Branch<double> load;
+  auto loading = [&](double z) {
+    Branch<double> lb = load;
+    if (z > p.z_y) lb.segment = 1;
+    return law.force(lb, z, 0.0);
+  };
+  auto unloading = [&](double z) { return law.force(b, z, 0.0); };
+  const double area = simpson(loading, 0, p.z_y, 20000) + simpson(loading, p.z_y, z_m, 2000) -
+                      simpson(unloading, b.z_perm, z_m, 20000);
+  EXPECT_NEAR(*law.hysteresis_work(b), area, 1e-9 * area);
+  EXPECT_GT(area, 0.0);
+}
+
+TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  Branch<double> b;
+  law.begin_unloading(b, 0.5 * p.z_y);
+  EXPECT_EQ(b.z_perm, 0.0);
+  EXPECT_EQ(*law.hysteresis_work(b), 0.0);
+  const double hertz = p.K_h * std::pow(0.3 * p.z_y, 1.5);
+  EXPECT_NEAR(law.force(b, 0.3 * p.z_y, 0.0), hertz, kAlgebra * hertz);
+}
+
+TEST(Linearized, SecantUnloadingMatchesEquations16To18) {
+  const DerivedParameters p = paper();
+  const LinearizedLaw law{p.K_h, p.K_y};
+  EXPECT_NEAR(law.minimum_z_max(), 2.25 * p.z_y, kAlgebra * p.z_y);
+  Branch<double> b;
+  const double z_m = 10 * p.z_y;
+  EXPECT_EQ(law.force(b, z_m, 0.0), p.K_y * z_m);  // eq. 15
+  law.begin_unloading(b, z_m);
+  const double z_f = z_m * std::pow(1 - p.K_y / (p.K_h * std::sqrt(z_m)), 2.0 / 3.0);  // eq. 17
+  const double gamma2 = 1 - z_f / z_m;                                                 // eq. 18
+  EXPECT_NEAR(b.z_perm, z_f, kAlgebra * z_m);
+  EXPECT_NEAR(law.force(b, z_m, 0.0), p.K_y * z_m, kAlgebra * p.K_y * z_m);  // continuous
+  EXPECT_NEAR(law.stiffness(b, z_m, 0.0), p.K_y / gamma2, kAlgebra * p.K_y / gamma2);
+  // secant of the nonlinear unloading curve from (z_m, K_y z_m) in the sense of eq. 17: the
+  // Hertz unloading curve through that point, K_h (z^{3/2} - z_f^{3/2}), vanishes at the same z_f
+  EXPECT_NEAR(p.K_h * (std::pow(z_m, 1.5) - std::pow(z_f, 1.5)), p.K_y * z_m,
+              kAlgebra * p.K_y * z_m);
+  EXPECT_GT(gamma2, 0.0);
+  EXPECT_LT(gamma2, 1.0);
+}
+
+TEST(Linearized, UndefinedBelowTwoAndAQuarterYieldDeformations) {
+  const DerivedParameters p = paper();
+  const LinearizedLaw law{p.K_h, p.K_y};
+  Branch<double> b;
+  try {
+    law.begin_unloading(b, 2.0 * p.z_y);
+    FAIL() << "no domain error";
+  } catch (const LawDomainError& e) {
+    EXPECT_NE(std::string(e.what()).find("2.25 z_y"), std::string::npos) << e.what();
+  }
+  Branch<double> edge;
+  law.begin_unloading(edge, law.minimum_z_max());  // exactly at the boundary: elastic unloading
+  EXPECT_NEAR(edge.z_perm, 0.0, 1e-6 * p.z_y);
+  EXPECT_TRUE(std::isfinite(edge.coef));
+}
+
+TEST(HuntCrossley, DampingTermScalesWithVelocity) {
+  const HuntCrossleyLaw law{1e9, 0.5};
+  Branch<double> b;
+  const double z = 1e-4, elastic = 1e9 * std::pow(z, 1.5);
+  EXPECT_NEAR(law.force(b, z, 0.0), elastic, kAlgebra * elastic);
+  EXPECT_NEAR(law.force(b, z, 1.0), 1.5 * elastic, kAlgebra * elastic);
+  EXPECT_NEAR(law.force(b, z, -1.0), 0.5 * elastic, kAlgebra * elastic);
+  EXPECT_NEAR(law.rate_stiffness(b, z, 0.3), 0.5 * elastic, kAlgebra * elastic);
+  EXPECT_FALSE(law.hysteresis_work(b).has_value());  // integrated, not closed form
+}
+
+TEST(ContactLawConcept, AllLawsModelIt) {
+  static_assert(ContactLaw<HertzLaw>);
+  static_assert(ContactLaw<ElastoplasticLaw>);
+  static_assert(ContactLaw<LinearizedLaw>);
+  static_assert(ContactLaw<HuntCrossleyLaw>);
+  SUCCEED();
+}
+
+}  // namespace
+}  // namespace ivv
