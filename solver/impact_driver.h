@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -99,7 +100,9 @@ typename System::value_type refine_on_restep(Stepper& stepper, const System& sys
     if (!next) break;
     const T change = *next - te;
     te = *next;
-    if ((change < 0 ? -change : change) <= T(1e-14) * (1 + (te < 0 ? -te : te))) break;
+    // converged to a few ulps of T (1e-14 in double, 1e-48 in the 50-digit reference)
+    const T ulps = 64 * std::numeric_limits<T>::epsilon();
+    if ((change < 0 ? -change : change) <= ulps * (1 + (te < 0 ? -te : te))) break;
   }
   stepper.restep(sys, te, xe);
   return te;

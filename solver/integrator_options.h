@@ -21,6 +21,9 @@ struct IntegratorOptions {
   // Declare capture (no rebound, e = 0) once the rebound COR still attainable from the
   // remaining energy, sqrt(w^2 + 2 U), is below this.
   double capture_cor = 1e-9;
+  // rtol = atol of the 50-digit reference (mp50); errors of double-precision integrators
+  // (>= 1e-16) are measured against it, so 1e-26 leaves ten digits to spare.
+  double reference_tolerance = 1e-26;
   LocatorOptions locator;
 
   // Default fixed step in tau for rk4: its global error ~ C h^4 with C = O(1) in the

@@ -15,7 +15,7 @@ constexpr std::array kLaws = {LawKind::hertz, LawKind::elastoplastic, LawKind::l
 constexpr std::array kIntegrators = {IntegratorKind::odeint_dopri5,
                                      IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
                                      IntegratorKind::dp45, IntegratorKind::gsl_rk8pd,
-                                     IntegratorKind::gsl_msbdf};
+                                     IntegratorKind::gsl_msbdf, IntegratorKind::mp50};
 
 template <class Kind, std::size_t N>
 std::string name_list(const std::array<Kind, N>& kinds) {
@@ -57,6 +57,8 @@ std::string_view to_string(IntegratorKind k) {
       return "gsl-rk8pd";
     case IntegratorKind::gsl_msbdf:
       return "gsl-msbdf";
+    case IntegratorKind::mp50:
+      return "mp50";
   }
   return "?";
 }
@@ -75,6 +77,8 @@ std::string_view describe(IntegratorKind k) {
       return "GSL odeiv2 Runge-Kutta Prince-Dormand 8(9), Hermite interpolant";
     case IntegratorKind::gsl_msbdf:
       return "GSL odeiv2 multistep BDF (orders 1-5) with Jacobian: stiff scenes";
+    case IntegratorKind::mp50:
+      return "50-digit reference: odeint Runge-Kutta-Fehlberg 7(8) on cpp_bin_float_50, tol 1e-26";
   }
   return "?";
 }
@@ -162,6 +166,8 @@ ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>
       return detail::simulate_gsl_rk8pd(req, p, trajectory);
     case IntegratorKind::gsl_msbdf:
       return detail::simulate_gsl_msbdf(req, p, trajectory);
+    case IntegratorKind::mp50:
+      return detail::simulate_mp50(req, p, trajectory);
   }
   return {};
 }

@@ -18,7 +18,15 @@
 namespace ivv {
 
 enum class LawKind { hertz, elastoplastic, linearized, hunt_crossley };
-enum class IntegratorKind { odeint_dopri5, odeint_rosenbrock4, rk4, dp45, gsl_rk8pd, gsl_msbdf };
+enum class IntegratorKind {
+  odeint_dopri5,
+  odeint_rosenbrock4,
+  rk4,
+  dp45,
+  gsl_rk8pd,
+  gsl_msbdf,
+  mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
+};
 
 std::span<const LawKind> all_laws();
 std::span<const IntegratorKind> all_integrators();

@@ -17,6 +17,8 @@ namespace ivv::detail {
 template <class System>
 ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, const Scene& scene,
                          const DerivedParameters& p) {
+  // the 50-digit reference reports in double, like everything else
+  auto d = [](const auto& v) { return static_cast<double>(v); };
   const double L = sys.length, V = scene.velocity, Fs = sys.force_scale;
   const double Ts = 1.0 / p.omega0;
   const double E = scene.mass * V * V;
@@ -27,56 +29,57 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.steps = run.steps;
   r.rhs_evaluations = sys.rhs_evaluations;
   for (const auto& ev : run.events) {
-    r.events.push_back({ev.kind, ev.tau * Ts, sys.z(ev.x) * L, ev.x[System::A] * L,
-                        ev.force * Fs});
+    r.events.push_back({ev.kind, d(ev.tau) * Ts, d(sys.z(ev.x)) * L, d(ev.x[System::A]) * L,
+                        d(ev.force) * Fs});
   }
   const auto& x = run.x_end;
-  r.t_contact = run.tau_end * Ts;
-  r.rebound_velocity = x[System::W] * V;
-  r.z_max = run.branch.z_max;
-  r.t_z_max = run.tau_z_max * Ts;
-  r.F_max = run.F_max * Fs;
-  r.t_F_max = run.tau_F_max * Ts;
-  r.z_perm = run.branch.z_perm;
-  if constexpr (System::has_dashpot) r.y_final = x[System::Y] * L;
+  r.t_contact = d(run.tau_end) * Ts;
+  r.rebound_velocity = d(x[System::W]) * V;
+  r.z_max = d(run.branch.z_max);
+  r.t_z_max = d(run.tau_z_max) * Ts;
+  r.F_max = d(run.F_max) * Fs;
+  r.t_F_max = d(run.tau_F_max) * Ts;
+  r.z_perm = d(run.branch.z_perm);
+  if constexpr (System::has_dashpot) r.y_final = d(x[System::Y]) * L;
   if (run.has_max_displacement) {
-    r.alpha_max = run.x_alpha_max[System::A] * L;
-    r.t_alpha_max = run.tau_alpha_max * Ts;
+    r.alpha_max = d(run.x_alpha_max[System::A]) * L;
+    r.t_alpha_max = d(run.tau_alpha_max) * Ts;
   } else {
-    r.alpha_max = x[System::A] * L;
+    r.alpha_max = d(x[System::A]) * L;
     r.t_alpha_max = r.t_contact;
   }
-  r.impulse = x[System::J] * scene.mass * V;
+  r.impulse = d(x[System::J]) * scene.mass * V;
   if (run.status == ImpactStatus::failed) return r;
 
-  const double w_f = x[System::W];
+  const double w_f = d(x[System::W]);
   r.e = run.status == ImpactStatus::separated ? -w_f : 0.0;
   if (run.has_max_displacement) {
-    const double J_c = run.x_alpha_max[System::J], J_f = x[System::J];
-    const double Wa_c = run.x_alpha_max[System::WA], Wa_f = x[System::WA];
-    r.impulse_compression = J_c * scene.mass * V;
-    r.e_poisson = (J_f - J_c) / J_c;
-    r.e_energetic = std::sqrt(std::max(0.0, (Wa_c - Wa_f) / Wa_c));
+    // differences taken in T before rounding
+    const auto J_c = run.x_alpha_max[System::J];
+    const auto Wa_c = run.x_alpha_max[System::WA];
+    r.impulse_compression = d(J_c) * scene.mass * V;
+    r.e_poisson = d((x[System::J] - J_c) / J_c);
+    r.e_energetic = std::sqrt(std::max(0.0, d((Wa_c - x[System::WA]) / Wa_c)));
   }
   EnergyLedger& led = r.energy;
   led.initial = 0.5 * E;
   led.final = 0.5 * E * w_f * w_f;
-  led.stored = sys.law.stored_energy(run.branch, sys.z(x) * L);
-  if constexpr (System::has_dashpot) led.viscous = x[System::WV] * E;
+  led.stored = d(sys.law.stored_energy(run.branch, sys.z(x) * L));
+  if constexpr (System::has_dashpot) led.viscous = d(x[System::WV]) * E;
   if (auto closed = sys.law.hysteresis_work(run.branch)) {
     led.plastic = *closed;
   } else {
-    led.plastic = x[System::WA] * E - led.viscous - led.stored;
+    led.plastic = d(x[System::WA]) * E - led.viscous - led.stored;
     led.plastic_integrated = true;
   }
   led.residual = led.initial - led.final - led.stored - led.plastic - led.viscous;
   return r;
 }
 
-template <template <class> class Stepper, class Law, bool Dashpot>
+template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
 ImpactResult run_typed(const Law& law, const SimulationRequest& req, const DerivedParameters& p,
                        std::vector<TrajectoryPoint>* trajectory) {
-  using System = ImpactSystem<Law, Dashpot>;
+  using System = ImpactSystem<Law, Dashpot, T>;
   const Scales k = scales(req.scene, p);
   System sys;
   sys.law = law;
@@ -88,17 +91,18 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
   if (trajectory) {
     observer = [trajectory, k](double tau, const typename System::state_type& x,
                                const System& s) {
-      const double F = s.force(x);
+      auto d = [](const auto& v) { return static_cast<double>(v); };
+      const double F = d(s.force(x));
       TrajectoryPoint pt;
       pt.tau = tau;
       pt.t = tau * k.time;
-      pt.alpha = x[System::A] * k.length;
-      pt.alpha_dot = x[System::W] * k.velocity;
+      pt.alpha = d(x[System::A]) * k.length;
+      pt.alpha_dot = d(x[System::W]) * k.velocity;
       pt.y = 0.0;
-      if constexpr (Dashpot) pt.y = x[System::Y] * k.length;
-      pt.z = s.z(x) * k.length;
+      if constexpr (Dashpot) pt.y = d(x[System::Y]) * k.length;
+      pt.z = d(s.z(x)) * k.length;
       pt.force = std::max(0.0, F) * k.force;
-      pt.alpha_bar = x[System::A];
+      pt.alpha_bar = d(x[System::A]);
       pt.force_bar = std::max(0.0, F);
       trajectory->push_back(pt);
     };
@@ -108,17 +112,17 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
   return to_physical(run, sys, req.scene, p);
 }
 
-template <template <class> class Stepper>
+template <template <class> class Stepper, class T = double>
 ImpactResult simulate_with(const SimulationRequest& req, const DerivedParameters& p,
                            std::vector<TrajectoryPoint>* trajectory) {
   const bool dashpot = p.has_dashpot();
   auto dispatch = [&](const auto& law) {
     using Law = std::decay_t<decltype(law)>;
     if constexpr (Law::rate_dependent) {
-      return run_typed<Stepper, Law, false>(law, req, p, trajectory);
+      return run_typed<Stepper, Law, false, T>(law, req, p, trajectory);
     } else {
-      return dashpot ? run_typed<Stepper, Law, true>(law, req, p, trajectory)
-                     : run_typed<Stepper, Law, false>(law, req, p, trajectory);
+      return dashpot ? run_typed<Stepper, Law, true, T>(law, req, p, trajectory)
+                     : run_typed<Stepper, Law, false, T>(law, req, p, trajectory);
     }
   };
   switch (req.law) {
@@ -148,5 +152,7 @@ ImpactResult simulate_gsl_rk8pd(const SimulationRequest&, const DerivedParameter
                                 std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_msbdf(const SimulationRequest&, const DerivedParameters&,
                                 std::vector<TrajectoryPoint>*);
+ImpactResult simulate_mp50(const SimulationRequest&, const DerivedParameters&,
+                           std::vector<TrajectoryPoint>*);
 
 }  // namespace ivv::detail

@@ -1,0 +1,65 @@
+#include "solver/fit_hunt_crossley.h"
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/input_error.h"
+
+namespace ivv {
+
+HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
+  if (model.law == LawKind::hunt_crossley)
+    throw InputError("--law", "fit-hc matches another law; hunt-crossley cannot be the model");
+  HuntCrossleyFit fit;
+  fit.model = simulate(model);
+  if (fit.model.status != ImpactStatus::separated) {
+    throw std::runtime_error("the model impact did not rebound (" +
+                             std::string(to_string(fit.model.status)) + ") " + fit.model.reason +
+                             ": Hunt-Crossley (e > 0 always) cannot match it");
+  }
+  fit.e = fit.model.e;
+  fit.F_max = fit.model.F_max;
+  fit.t_contact_model = fit.model.t_contact;
+  const DerivedParameters p = derive(model.scene);
+
+  SimulationRequest hc = model;
+  hc.law = LawKind::hunt_crossley;
+  hc.scene.damping = Damping::none();
+  hc.hunt_crossley.K = p.K_h;
+  const double v0 = model.scene.velocity;
+  auto run = [&](double u0) {
+    hc.hunt_crossley.mu = u0 / v0;
+    ++fit.evaluations;
+    const ImpactResult r = simulate(hc);
+    if (!r.separated()) throw std::runtime_error("Hunt-Crossley run failed: " + r.reason);
+    return r;
+  };
+
+  // e_HC falls monotonically from 1 (u0 = 0) towards 0 as u0 grows; bracket then solve.
+  double lo = 0.0, hi = 1.0;
+  double f_lo = 1.0 - fit.e;
+  double f_hi = run(hi).e - fit.e;
+  while (f_hi > 0) {
+    lo = hi;
+    f_lo = f_hi;
+    hi *= 4;
+    if (hi > 1e6) throw std::runtime_error("cannot bracket the Hunt-Crossley mu for e = " + std::to_string(fit.e));
+    f_hi = run(hi).e - fit.e;
+  }
+  // the COR of the runs is accurate to ~1e-10 (rtol); stop the bracket near that
+  boost::math::tools::eps_tolerance<double> tol(34);
+  std::uintmax_t iterations = 100;
+  const auto bracket = boost::math::tools::toms748_solve(
+      [&](double u0) { return run(u0).e - fit.e; }, lo, hi, f_lo, f_hi, tol, iterations);
+  const double u0 = 0.5 * (bracket.first + bracket.second);
+  const ImpactResult trial = run(u0);
+  fit.mu = u0 / v0;
+  fit.K = p.K_h * std::pow(fit.F_max / trial.F_max, 2.5);
+  hc.hunt_crossley.K = fit.K;
+  fit.hc = run(u0);
+  fit.t_contact_hc = fit.hc.t_contact;
+  return fit;
+}
+
+}  // namespace ivv

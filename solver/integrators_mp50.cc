@@ -1,0 +1,13 @@
+// Instantiates simulate() for the 50-digit reference (IntegratorKind::mp50).
+#include "solver/hermite.h"
+#include "solver/simulate_impl.h"
+#include "solver/steppers/odeint_rkf78_mp.h"
+
+namespace ivv::detail {
+
+ImpactResult simulate_mp50(const SimulationRequest& req, const DerivedParameters& p,
+                           std::vector<TrajectoryPoint>* trajectory) {
+  return simulate_with<OdeintRkf78MpStepper, mp50>(req, p, trajectory);
+}
+
+}  // namespace ivv::detail

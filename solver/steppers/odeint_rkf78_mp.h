@@ -1,0 +1,110 @@
+// The 50-digit reference: Boost.Odeint's Runge-Kutta-Fehlberg 7(8) (Fehlberg, NASA TR R-287,
+// 1968) under odeint's step-size controller, on boost::multiprecision::cpp_bin_float_50, at a
+// tolerance (default 1e-26) far below anything double precision can resolve. It shares the
+// laws, the normalised system and the event definitions with the double-precision
+// integrators, and nothing else. No dense output: the event locator works on cubic Hermite
+// and refines by re-stepping with the eighth-order formula.
+#pragma once
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/numeric/odeint.hpp>
+#include <sstream>
+
+#include "solver/integrator_options.h"
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+using mp50 = boost::multiprecision::cpp_bin_float_50;
+
+// odeint's default error checker cannot take the inf-norm of std::array<cpp_bin_float_50, N>
+// (extract_value_type has no specialisation for multiprecision numbers); this one computes the
+// same scaled max norm, max_i |err_i| / (atol + rtol |x_i|), element by element.
+template <class T>
+struct MpErrorChecker {
+  using value_type = T;
+  using algebra_type = boost::numeric::odeint::array_algebra;
+  T atol, rtol;
+  template <class State, class Deriv, class Err, class Time>
+  T error(algebra_type&, const State& x_old, const Deriv&, Err& x_err, Time) const {
+    using std::abs;
+    T worst = 0;
+    for (std::size_t i = 0; i < x_err.size(); ++i) {
+      const T e = abs(x_err[i]) / (atol + rtol * abs(x_old[i]));
+      if (e > worst) worst = e;
+    }
+    return worst;
+  }
+};
+
+template <class System>
+class OdeintRkf78MpStepper {
+ public:
+  using state_type = typename System::state_type;
+  using T = typename System::value_type;
+  static constexpr std::string_view name = "mp50";
+  static constexpr bool dense_output = false;
+  static constexpr int order = 8;
+
+  explicit OdeintRkf78MpStepper(const IntegratorOptions& opt)
+      : controlled_(MpErrorChecker<T>{T(opt.reference_tolerance), T(opt.reference_tolerance)}),
+        h_(opt.initial_dt * 1e-3) {}
+
+  void start(const System& sys, T t, const state_type& x) {
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, f1_, t1_);
+  }
+
+  StepResult step(const System& sys) {
+    t0_ = t1_;
+    x0_ = x1_;
+    f0_ = f1_;
+    auto rhs = [&sys](const state_type& x, state_type& dxdt, T t) { sys(x, dxdt, t); };
+    T t = t0_;
+    state_type x = x0_;
+    for (int attempt = 0;; ++attempt) {
+      if (controlled_.try_step(rhs, x, t, h_) == boost::numeric::odeint::success) break;
+      if (attempt > 200 || h_ < T(1e-40)) {
+        std::ostringstream os;
+        os << "mp50: step size underflow at tau = " << static_cast<double>(t0_);
+        return StepResult::failure(os.str());
+      }
+    }
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, f1_, t1_);
+    ++steps_;
+    return StepResult::success();
+  }
+
+  void restep(const System& sys, T t, state_type& out) {
+    auto rhs = [&sys](const state_type& x, state_type& dxdt, T tt) { sys(x, dxdt, tt); };
+    error_stepper().do_step(rhs, x0_, t0_, out, t - t0_);
+  }
+
+  void interpolate(const System&, T t, state_type& out) const {
+    hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
+  }
+
+  T t0() const { return t0_; }
+  T t1() const { return t1_; }
+  const state_type& x0() const { return x0_; }
+  const state_type& x1() const { return x1_; }
+  const state_type& f0() const { return f0_; }
+  const state_type& f1() const { return f1_; }
+  long steps() const { return steps_; }
+
+ private:
+  using error_stepper =
+      boost::numeric::odeint::runge_kutta_fehlberg78<state_type, T, state_type, T>;
+  using controlled_type =
+      boost::numeric::odeint::controlled_runge_kutta<error_stepper, MpErrorChecker<T>>;
+  controlled_type controlled_;
+  T h_;
+  T t0_{}, t1_{};
+  state_type x0_{}, x1_{}, f0_{}, f1_{};
+  long steps_ = 0;
+};
+
+}  // namespace ivv
