@@ -1,0 +1,218 @@
+#include "bench/work_precision.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+// The CMake build type, set by bench/CMakeLists.txt.
+#ifndef IVV_BUILD_TYPE
+#define IVV_BUILD_TYPE ""
+#endif
+
+namespace ivv::bench {
+namespace {
+
+double floored(double error) {
+  return error == 0.0 ? kErrorFloor : error;
+}
+
+double relative_error(double x, double reference) {
+  const double diff = std::abs(x - reference);
+  return floored(reference == 0.0 ? diff : diff / std::abs(reference));
+}
+
+double median(std::vector<double> v) {
+  const std::size_t n = v.size();
+  std::nth_element(v.begin(), v.begin() + n / 2, v.end());
+  const double upper = v[n / 2];
+  if (n % 2 == 1) return upper;
+  return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + n / 2));
+}
+
+// The point's request: `base` with the integrator and its accuracy setting replaced.
+SimulationRequest point_request(const SimulationRequest& base, IntegratorKind kind,
+                                double tolerance) {
+  SimulationRequest req = base;
+  req.integrator = kind;
+  if (kind == IntegratorKind::rk4) {
+    req.options.dt = tolerance;
+  } else {
+    req.options.rtol = tolerance;
+    req.options.atol = tolerance;  // the state is normalised to O(1): atol = rtol
+    req.options.fixed_step = false;
+  }
+  return req;
+}
+
+WorkPrecisionPoint measure_point(const SimulationRequest& req, double tolerance,
+                                 const ImpactResult& ref, const WorkPrecisionOptions& opt) {
+  using Clock = std::chrono::steady_clock;
+  WorkPrecisionPoint pt;
+  pt.tolerance = tolerance;
+  std::vector<double> seconds;
+  ImpactResult r;
+  const auto study_start = Clock::now();
+  do {
+    const auto t0 = Clock::now();
+    r = simulate(req);
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    if (!r.ok()) break;  // a failure is not worth timing again
+  } while (static_cast<int>(seconds.size()) < opt.min_repeats ||
+           std::chrono::duration<double>(Clock::now() - study_start).count() <
+               opt.min_seconds_per_point);
+  pt.seconds_per_impact = median(seconds);
+  pt.repeats = static_cast<int>(seconds.size());
+  pt.steps = r.steps;
+  pt.rhs_evaluations = r.rhs_evaluations;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  pt.error_e = pt.error_F_max = pt.error_t_contact = nan;
+  if (!r.ok()) {
+    pt.reason = r.reason.empty() ? "integration failed" : r.reason;
+    return pt;
+  }
+  if (r.status != ref.status) {
+    pt.reason = "ended " + std::string(to_string(r.status)) + ", the reference " +
+                std::string(to_string(ref.status));
+    return pt;
+  }
+  pt.ok = true;
+  pt.error_e = relative_error(r.e, ref.e);
+  pt.error_F_max = relative_error(r.F_max, ref.F_max);
+  pt.error_t_contact = relative_error(r.t_contact, ref.t_contact);
+  return pt;
+}
+
+std::string compiler_name() {
+#if defined(__clang__)
+  return std::string("clang ") + __VERSION__;
+#elif defined(__GNUC__)
+  return std::string("GCC ") + __VERSION__;
+#else
+  return __VERSION__;
+#endif
+}
+
+// Least-squares slope of log(y) on log(x).
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+}  // namespace
+
+MachineInfo describe_machine() {
+  MachineInfo m;
+  m.cpu_model = "unknown";
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const auto first = line.find_first_not_of(" \t", colon + 1);
+    if (first != std::string::npos) m.cpu_model = line.substr(first);
+    break;
+  }
+  m.logical_cores = static_cast<int>(std::thread::hardware_concurrency());
+  m.compiler = compiler_name();
+  m.build_type = std::string(IVV_BUILD_TYPE).empty() ? "unspecified" : IVV_BUILD_TYPE;
+  return m;
+}
+
+WorkPrecisionStudy measure_work_precision(const std::string& label, const SimulationRequest& base,
+                                          const WorkPrecisionOptions& options) {
+  validate(base);
+  WorkPrecisionStudy study;
+  study.label = label;
+  study.base = base;
+  study.machine = describe_machine();
+
+  SimulationRequest ref_req = base;
+  ref_req.integrator = IntegratorKind::mp50;
+  study.reference = simulate(ref_req);
+  if (!study.reference.ok())
+    throw std::runtime_error("work-precision study '" + label +
+                             "': the mp50 reference failed: " + study.reference.reason);
+
+  std::size_t total = 0;
+  for (IntegratorKind k : options.integrators)
+    total += (k == IntegratorKind::rk4 ? options.rk4_steps : options.rtols).size();
+  std::size_t done = 0;
+  for (IntegratorKind k : options.integrators) {
+    WorkPrecisionSeries s;
+    s.integrator = k;
+    for (double tol : k == IntegratorKind::rk4 ? options.rk4_steps : options.rtols) {
+      const SimulationRequest req = point_request(base, k, tol);
+      validate(req);
+      s.points.push_back(measure_point(req, tol, study.reference, options));
+      if (options.progress) options.progress(++done, total);
+    }
+    study.series.push_back(std::move(s));
+  }
+  return study;
+}
+
+LinearizedUndamped linearized_undamped_closed_form(const Scene& scene) {
+  const DerivedParameters p = derive(scene);
+  const double z_m = scene.velocity * std::sqrt(scene.mass / p.K_y);  // paper eq. 19
+  const double q = p.K_y / (p.K_h * std::sqrt(z_m));
+  if (!(q <= 1.0))
+    throw std::invalid_argument("linearized law undefined: z_m < (K_y/K_h)^2 at v0 = " +
+                                std::to_string(scene.velocity) + " m/s");
+  // gamma^2 = 1 - (1 - q)^{2/3} (paper eq. 20), without cancellation when q is small
+  const double gamma = std::sqrt(-std::expm1(2.0 / 3.0 * std::log1p(-q)));
+  return {gamma, std::numbers::pi / 2 * (1 + gamma) / p.omega0};
+}
+
+ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
+                                     std::vector<double> dts, bool locate_events) {
+  if (base.law != LawKind::linearized)
+    throw std::invalid_argument("measure_convergence: the closed form needs LawKind::linearized");
+  if (base.scene.damping.kind != Damping::Kind::none)
+    throw std::invalid_argument("measure_convergence: the closed form needs no dashpot");
+  if (kind != IntegratorKind::rk4 && kind != IntegratorKind::dp45)
+    throw std::invalid_argument("measure_convergence: integrator must be rk4 or dp45");
+  if (dts.size() < 2 ||
+      std::all_of(dts.begin(), dts.end(), [&](double dt) { return dt == dts[0]; }))
+    throw std::invalid_argument("measure_convergence: needs at least two distinct dts");
+
+  const LinearizedUndamped exact = linearized_undamped_closed_form(base.scene);
+  ConvergenceStudy study;
+  study.integrator = kind;
+  study.events_located = locate_events;
+  for (double dt : dts) {
+    SimulationRequest req = base;
+    req.integrator = kind;
+    req.options.dt = dt;
+    req.options.fixed_step = kind == IntegratorKind::dp45;
+    req.options.locate_events = locate_events;
+    const ImpactResult r = simulate(req);
+    if (!r.separated()) {
+      std::ostringstream os;
+      os << "measure_convergence: " << to_string(kind) << " at dt = " << dt << " ended "
+         << to_string(r.status) << (r.reason.empty() ? "" : ": ") << r.reason;
+      throw std::runtime_error(os.str());
+    }
+    study.steps.push_back(dt);
+    study.errors_e.push_back(relative_error(r.e, exact.e));
+    study.errors_t_contact.push_back(relative_error(r.t_contact, exact.t_contact));
+  }
+  study.fitted_order = fitted_slope(study.steps, study.errors_e);
+  study.fitted_order_t_contact = fitted_slope(study.steps, study.errors_t_contact);
+  return study;
+}
+
+}  // namespace ivv::bench
