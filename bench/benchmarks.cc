@@ -1,0 +1,86 @@
+#include "bench/benchmarks.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "solver/simulate.h"
+
+namespace ivv::bench {
+namespace {
+
+// SPEC §1: with c = 11440 N s/m the paper scene has zeta ~ 0.1.
+constexpr double kPaperDashpot = 11440.0;  // [N s/m]
+constexpr double kPaperVelocity = 1.0;     // [m/s]
+constexpr double kStiffZeta = 1000.0;      // SPEC §6: the stiff end of the damping range
+
+constexpr IntegratorKind kDoublePrecision[] = {
+    IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
+    IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf};
+constexpr IntegratorKind kImplicit[] = {IntegratorKind::odeint_rosenbrock4,
+                                        IntegratorKind::gsl_msbdf};
+
+SimulationRequest paper_request(IntegratorKind kind, Damping damping) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.velocity = kPaperVelocity;
+  req.scene.damping = damping;
+  req.law = LawKind::elastoplastic;
+  req.integrator = kind;
+  return req;
+}
+
+void one_impact(benchmark::State& state, const SimulationRequest& req) {
+  ImpactResult r;
+  for (auto _ : state) {
+    r = simulate(req);
+    benchmark::DoNotOptimize(r);
+    if (!r.ok()) {
+      state.SkipWithError(("impact failed: " + r.reason).c_str());
+      break;
+    }
+  }
+  state.counters["rhs_evals"] = static_cast<double>(r.rhs_evaluations);
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["e"] = r.e;
+}
+
+void register_all() {
+  for (IntegratorKind k : kDoublePrecision) {
+    const SimulationRequest req = paper_request(k, Damping::coefficient(kPaperDashpot));
+    benchmark::RegisterBenchmark(("paper/default/" + std::string(to_string(k))).c_str(), one_impact,
+                                 req)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  for (IntegratorKind k : kDoublePrecision) {
+    if (k == IntegratorKind::rk4) continue;  // fixed step: no tolerance to set
+    SimulationRequest req = paper_request(k, Damping::coefficient(kPaperDashpot));
+    req.options.rtol = req.options.atol = 1e-6;
+    benchmark::RegisterBenchmark(("paper/rtol=1e-6/" + std::string(to_string(k))).c_str(),
+                                 one_impact, req)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  for (IntegratorKind k : kImplicit) {
+    const SimulationRequest req = paper_request(k, Damping::ratio(kStiffZeta));
+    benchmark::RegisterBenchmark(("stiff/" + std::string(to_string(k))).c_str(), one_impact, req)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  const SimulationRequest ref =
+      paper_request(IntegratorKind::mp50, Damping::coefficient(kPaperDashpot));
+  benchmark::RegisterBenchmark("reference/mp50", one_impact, ref)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(1);
+}
+
+}  // namespace
+
+int run_benchmarks(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace ivv::bench
