@@ -64,7 +64,7 @@ TEST(Cli, SummaryIsReadable) {
 TEST(Cli, IntegratorsListsOnePerLine) {
   const CliRun r = ivv("integrators");
   ASSERT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out, "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ngsl-rk8pd\ngsl-msbdf\n");
+  EXPECT_EQ(r.out, "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
 }
 
 TEST(Cli, SceneShowPrintsDerivedParameters) {

@@ -1,5 +1,7 @@
 #include "bench/work_precision.h"
 
+#include "oracles/linear_model.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -165,31 +167,20 @@ WorkPrecisionStudy measure_work_precision(const std::string& label, const Simula
   return study;
 }
 
-LinearizedUndamped linearized_undamped_closed_form(const Scene& scene) {
-  const DerivedParameters p = derive(scene);
-  const double z_m = scene.velocity * std::sqrt(scene.mass / p.K_y);  // paper eq. 19
-  const double q = p.K_y / (p.K_h * std::sqrt(z_m));
-  if (!(q <= 1.0))
-    throw std::invalid_argument("linearized law undefined: z_m < (K_y/K_h)^2 at v0 = " +
-                                std::to_string(scene.velocity) + " m/s");
-  // gamma^2 = 1 - (1 - q)^{2/3} (paper eq. 20), without cancellation when q is small
-  const double gamma = std::sqrt(-std::expm1(2.0 / 3.0 * std::log1p(-q)));
-  return {gamma, std::numbers::pi / 2 * (1 + gamma) / p.omega0};
-}
-
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
                                      std::vector<double> dts, bool locate_events) {
   if (base.law != LawKind::linearized)
     throw std::invalid_argument("measure_convergence: the closed form needs LawKind::linearized");
-  if (base.scene.damping.kind != Damping::Kind::none)
-    throw std::invalid_argument("measure_convergence: the closed form needs no dashpot");
   if (kind != IntegratorKind::rk4 && kind != IntegratorKind::dp45)
     throw std::invalid_argument("measure_convergence: integrator must be rk4 or dp45");
   if (dts.size() < 2 ||
       std::all_of(dts.begin(), dts.end(), [&](double dt) { return dt == dts[0]; }))
     throw std::invalid_argument("measure_convergence: needs at least two distinct dts");
 
-  const LinearizedUndamped exact = linearized_undamped_closed_form(base.scene);
+  const oracles::LinearImpact exact =
+      oracles::solve_linear_model(oracles::linear_model_input(base.scene, derive(base.scene)));
+  if (exact.captured)
+    throw std::invalid_argument("measure_convergence: the closed form is a capture (no COR)");
   ConvergenceStudy study;
   study.integrator = kind;
   study.events_located = locate_events;

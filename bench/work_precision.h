@@ -9,12 +9,15 @@
 //     adaptive integrators and the fixed step dt in normalised time tau = omega0 t for rk4.
 //   * Convergence order (measure_convergence): the errors of e and of the contact time t_f of
 //     a fixed-step integrator (rk4, or dp45 with its error control off) against the exact
-//     closed form of the undamped linearized model (paper eqs 19-20), and the least-squares
-//     slope of log(error) on log(dt). Measured on the paper scene at 1 m/s (see
-//     work_precision_test.cc for the step ranges):
-//       rk4, events located:      t_f order 3.98 (the method's 4); e order 4.98, because e is
-//                                 an amplitude and RK4's amplitude error on an oscillator is
-//                                 |R(i theta)| - 1 = -theta^6/144 per step, O(h^5) globally
+//     closed form of the linearized model (oracles::solve_linear_model, paper eqs 19-25), and
+//     the least-squares slope of log(error) on log(dt). Measured on the paper scene at 1 m/s
+//     (see work_precision_test.cc for the step ranges):
+//       rk4, events located, zeta = 0.1: e order 4 (the method's order)
+//       rk4, events located, no dashpot: t_f order 3.98; e order 4.98, because e is then
+//                                 an amplitude and RK4's amplitude error on an undamped
+//                                 oscillator is |R(i theta)| - 1 = -theta^6/144 per step,
+//                                 O(h^5) globally (with damping the O(h^5) local amplitude
+//                                 error returns and so does order 4)
 //       dp45 fixed, located:      e order 4.97
 //       either, events at step ends only: e order 2.1 (z_m taken at the first step end past
 //                                 dz/dt = 0 is short by O(h^2)), t_f order 1.1 (separation
@@ -119,23 +122,12 @@ struct ConvergenceStudy {
   double fitted_order_t_contact = 0.0;   // the same for errors_t_contact
 };
 
-// The exact outcome of the undamped linearized law (paper eqs 19-20), computed here (two
-// lines) so that the convergence study needs nothing but the solver:
-//   z_m = v0 sqrt(m/K_y),  e = gamma,  gamma^2 = 1 - (1 - K_y/(K_h sqrt(z_m)))^{2/3},
-//   t_f = (pi/2)(1 + gamma)/omega0  (a quarter period at omega0 loading, at omega0/gamma
-//   unloading from z_m to the permanent set z_f).
-// Requires z_m >= (K_y/K_h)^2, where the law is defined (std::invalid_argument otherwise).
-struct LinearizedUndamped {
-  double e = 0.0;          // Newton COR [-]
-  double t_contact = 0.0;  // [s]
-};
-LinearizedUndamped linearized_undamped_closed_form(const Scene& scene);
-
 // Runs `base` with integrator `kind` (rk4, or dp45 with fixed_step) at each fixed step dt of
 // `dts` (normalised time), with options.locate_events = locate_events, and compares e and t_f
-// with linearized_undamped_closed_form(). Preconditions (std::invalid_argument otherwise): base.law
-// is LawKind::linearized, the scene has no dashpot, kind is rk4 or dp45, at least two distinct dts.
-// Throws std::runtime_error naming dt if a run fails.
+// with the closed form of the linearized model, with or without a dashpot
+// (oracles::solve_linear_model, paper eqs 22-25). Preconditions (std::invalid_argument
+// otherwise): base.law is LawKind::linearized, the closed form rebounds (no capture), kind is
+// rk4 or dp45, at least two distinct dts. Throws std::runtime_error naming dt if a run fails.
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
                                      std::vector<double> dts, bool locate_events);
 

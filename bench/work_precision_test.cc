@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include "oracles/linear_model.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -102,22 +101,15 @@ TEST(WorkPrecision, AFailingReferenceThrows) {
                std::runtime_error);
 }
 
-// The two-line closed form used by measure_convergence against the oracle library's
-// independent solution of the same model (ivv::oracles, zeta = 0): both are closed forms, so
-// they agree to round-off (a few ulps through sqrt/pow/expm1; 1e-13 leaves a margin).
-TEST(Convergence, ClosedFormAgreesWithTheLinearModelOracle) {
-  constexpr double kRoundOff = 1e-13;
-  Scene scene = linearized_paper().scene;
-  for (double v0 : {0.5, 1.0, 5.0, 100.0}) {
-    scene.velocity = v0;
-    const LinearizedUndamped mine = linearized_undamped_closed_form(scene);
-    const oracles::LinearImpact oracle =
-        oracles::solve_linear_model(oracles::linear_model_input(scene, derive(scene)));
-    EXPECT_NEAR(mine.e / oracle.e, 1.0, kRoundOff) << "v0 = " << v0;
-    EXPECT_NEAR(mine.t_contact / oracle.t_contact, 1.0, kRoundOff) << "v0 = " << v0;
-  }
-  scene.velocity = 0.1;  // z_m < 2.25 z_y
-  EXPECT_THROW(linearized_undamped_closed_form(scene), std::invalid_argument);
+// With a dashpot the COR is no longer a pure amplitude of an undamped oscillator: the local
+// amplitude error of RK4 is O(h^5) and the classical order 4 shows on e itself.
+TEST(Convergence, Rk4WithDampingIsFourthOrderInTheCor) {
+  SimulationRequest req = linearized_paper();
+  req.scene.damping = Damping::ratio(0.1);
+  const ConvergenceStudy c =
+      measure_convergence(req, IntegratorKind::rk4, steps_from(0.2, 0.005), true);
+  EXPECT_NEAR(c.fitted_order, 4.0, kOrderTolerance);
+  for (double err : c.errors_e) EXPECT_GT(err, 1e-14) << "round-off would bias the slope";
 }
 
 // rk4 with event location. The COR converges at order 5, not 4: for this piecewise-linear
@@ -170,7 +162,8 @@ TEST(Convergence, RefusesWhatTheClosedFormDoesNotDescribe) {
   EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, true),
                std::invalid_argument);
   req = linearized_paper();
-  req.scene.damping = Damping::ratio(0.1);
+  req.scene.velocity = 50.0;
+  req.scene.damping = Damping::ratio(0.6);  // unloading damping zeta/gamma >= 1: capture
   EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, true),
                std::invalid_argument);
 }

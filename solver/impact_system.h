@@ -3,10 +3,13 @@
 // Physical model (paper eqs 1-4):  m alpha'' = -F,  c y' = F,  z = alpha - y,  F = f(z) >= 0.
 // With tau = omega0 t, alpha = (v0/omega0) a, y = (v0/omega0) y_bar, F = m v0 omega0 F_bar:
 //
-//   a' = w,   w' = -F_bar,   y_bar' = 2 zeta F_bar          (' = d/dtau)
+//   a' = w,   w' = -F_bar,   z_bar' = w - 2 zeta F_bar          (' = d/dtau)
 //
-// since m omega0 / c = 2 zeta. Initial state a = y = 0, w = 1. Without a dashpot (c = inf)
-// y is identically zero and is not integrated: the dynamical state is (a, w).
+// since m omega0 / c = 2 zeta and z = alpha - y. Initial state a = z = 0, w = 1. The spring
+// deformation z is integrated rather than the dashpot displacement y: with a weak dashpot
+// (zeta >> 1) alpha and y both grow to O(zeta) while z stays O(1/zeta), and error control on
+// alpha and y separately would swamp the small difference that sets the force. y = a - z is
+// recovered on output. Without a dashpot (c = inf) z = a and only (a, w) are integrated.
 //
 // Three quadratures ride along (they are outputs, not dynamics), in units of m v0 and m v0^2:
 //   J   = int F_bar dtau            impulse
@@ -38,7 +41,7 @@ struct ImpactSystem {
   // state indices
   static constexpr std::size_t A = 0;  // normalised impactor displacement
   static constexpr std::size_t W = 1;  // normalised impactor velocity
-  static constexpr std::size_t Y = 2;  // normalised dashpot displacement (Dashpot only)
+  static constexpr std::size_t Z = 2;  // normalised spring deformation (Dashpot only)
   static constexpr std::size_t J = Dashpot ? 3 : 2;
   static constexpr std::size_t WA = J + 1;
   static constexpr std::size_t WV = Dashpot ? 5 : N;  // == N: absent
@@ -58,12 +61,17 @@ struct ImpactSystem {
   }
 
   T z(const state_type& x) const {
-    if constexpr (Dashpot) return x[A] - x[Y];
+    if constexpr (Dashpot) return x[Z];
     return x[A];
   }
   // Normalised force on the current branch (smooth continuation; may be < 0 past separation).
   T force(const state_type& x) const {
     return law.force(branch, T(length * z(x)), T(velocity * x[W])) / force_scale;
+  }
+  // Normalised dashpot displacement y = a - z.
+  T y(const state_type& x) const {
+    if constexpr (Dashpot) return x[A] - x[Z];
+    return T(0);
   }
   // dz/dtau = w - 2 zeta F_bar.
   T z_rate(const state_type& x) const {
@@ -77,7 +85,7 @@ struct ImpactSystem {
     dxdt[A] = x[W];
     dxdt[W] = -F;
     if constexpr (Dashpot) {
-      dxdt[Y] = two_zeta * F;
+      dxdt[Z] = x[W] - two_zeta * F;
       dxdt[WV] = two_zeta * F * F;
     }
     dxdt[J] = F;
@@ -108,21 +116,21 @@ struct ImpactSystem {
     const T F = force(x);
     const T k = stiffness(x);
     const T kv = rate_stiffness(x);
-    // dF/dx: z = a - y, rate argument = w
+    // dF/dx: z is x[Z] with a dashpot, x[A] without; the rate argument is w
     std::array<T, N> dF{};
-    dF[A] = k;
+    dF[Dashpot ? Z : A] = k;
     dF[W] = kv;
-    if constexpr (Dashpot) dF[Y] = -k;
     m(A, W) = T(1);
     for (std::size_t j = 0; j < N; ++j) {
       m(W, j) = -dF[j];
       m(J, j) = dF[j];
       m(WA, j) = dF[j] * x[W];
       if constexpr (Dashpot) {
-        m(Y, j) = two_zeta * dF[j];
+        m(Z, j) = -two_zeta * dF[j];
         m(WV, j) = 2 * two_zeta * F * dF[j];
       }
     }
+    if constexpr (Dashpot) m(Z, W) += T(1);
     m(WA, W) += F;
   }
 

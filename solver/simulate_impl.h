@@ -40,7 +40,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.F_max = d(run.F_max) * Fs;
   r.t_F_max = d(run.tau_F_max) * Ts;
   r.z_perm = d(run.branch.z_perm);
-  if constexpr (System::has_dashpot) r.y_final = d(x[System::Y]) * L;
+  r.y_final = d(sys.y(x)) * L;
   if (run.has_max_displacement) {
     r.alpha_max = d(run.x_alpha_max[System::A]) * L;
     r.t_alpha_max = d(run.tau_alpha_max) * Ts;
@@ -98,8 +98,7 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
       pt.t = tau * k.time;
       pt.alpha = d(x[System::A]) * k.length;
       pt.alpha_dot = d(x[System::W]) * k.velocity;
-      pt.y = 0.0;
-      if constexpr (Dashpot) pt.y = d(x[System::Y]) * k.length;
+      pt.y = d(s.y(x)) * k.length;
       pt.z = d(s.z(x)) * k.length;
       pt.force = std::max(0.0, F) * k.force;
       pt.alpha_bar = d(x[System::A]);

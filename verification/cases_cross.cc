@@ -1,0 +1,99 @@
+// Cross-implementation tier: every double-precision integrator against the 50-digit reference
+// (mp50), which shares only the laws and event definitions with them.
+#include "verification/cases.h"
+#include "verification/support.h"
+#include "verification/tolerances.h"
+
+namespace ivv::verification {
+namespace {
+
+struct LawGrid {
+  LawKind law;
+  std::vector<SimulationRequest> requests;  // integrator filled in per case
+  std::vector<std::string> labels;
+};
+
+LawGrid grid_for(LawKind law) {
+  LawGrid g{law, {}, {}};
+  if (law == LawKind::hunt_crossley) {
+    for (double v0 : {0.1, 1.0, 5.0})
+      for (double u0 : {0.2, 1.0, 5.0}) {
+        g.requests.push_back(request(with(paper_scene(), v0, 0.0), law,
+                                     IntegratorKind::odeint_dopri5, u0 / v0));
+        g.labels.push_back("paper v0=" + fmt(v0) + " mu v0=" + fmt(u0));
+      }
+    return g;
+  }
+  for (const GridScene& gs : paper_grid()) {
+    // the linearized law is undefined at 0.1 m/s (z_m < 2.25 z_y): a stability case says so
+    if (law == LawKind::linearized && gs.scene.velocity < 0.5) continue;
+    g.requests.push_back(request(gs.scene, law, IntegratorKind::odeint_dopri5));
+    g.labels.push_back(gs.label);
+  }
+  return g;
+}
+
+Outcome against_reference(const std::vector<SimulationRequest>& requests,
+                          const std::vector<std::string>& labels, IntegratorKind k,
+                          double tolerance) {
+  WorstError w;
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    SimulationRequest req = requests[i];
+    req.integrator = k;
+    const ImpactResult& ref = reference(req);
+    const ImpactResult r = simulate(req);
+    if (r.status != ref.status) {
+      w.fail(labels[i] + ": status " + std::string(to_string(r.status)) + " vs reference " +
+             std::string(to_string(ref.status)) + " " + r.reason);
+      continue;
+    }
+    w.add_cor(r.e, ref.e, labels[i] + " e");
+    w.add(r.F_max, ref.F_max, labels[i] + " F_max");
+    w.add(r.t_contact, ref.t_contact, labels[i] + " t_contact");
+    w.add(r.z_max, ref.z_max, labels[i] + " z_max");
+  }
+  return worst_case(w, tolerance, "e, F_max, t_contact, z_max against mp50");
+}
+
+std::vector<IntegratorKind> double_integrators() {
+  std::vector<IntegratorKind> out;
+  for (IntegratorKind k : all_integrators())
+    if (k != IntegratorKind::mp50) out.push_back(k);
+  return out;
+}
+
+}  // namespace
+
+void register_cross_implementation_cases(Registry& reg) {
+  for (LawKind law : all_laws()) {
+    for (IntegratorKind k : double_integrators()) {
+      const Tolerance tol = default_settings_tolerance(k);
+      const std::string id =
+          "cross." + std::string(to_string(law)) + "." + std::string(to_string(k));
+      reg.add({id,
+               std::string(to_string(law)) + " law on the paper grid (v0 0.1-5 m/s, zeta 0-0.3): " +
+                   std::string(to_string(k)) + " vs the 50-digit reference",
+               Tier::cross_implementation, tol.reason, false, [law, k, tol] {
+                 const LawGrid g = grid_for(law);
+                 return against_reference(g.requests, g.labels, k, tol.value);
+               }});
+    }
+  }
+  for (IntegratorKind k : double_integrators()) {
+    const Tolerance tol = default_settings_tolerance(k);
+    reg.add({"cross.extended-scenes." + std::string(to_string(k)),
+             "Elastoplastic law on other material pairs and masses 1e-3-10 kg: " +
+                 std::string(to_string(k)) + " vs the 50-digit reference",
+             Tier::cross_implementation, tol.reason, true, [k, tol] {
+               std::vector<SimulationRequest> reqs;
+               std::vector<std::string> labels;
+               for (const GridScene& gs : extended_grid()) {
+                 reqs.push_back(request(gs.scene, LawKind::elastoplastic, k));
+                 labels.push_back(gs.label);
+               }
+               return against_reference(reqs, labels, k, tol.value);
+             }});
+  }
+}
+
+}  // namespace ivv::verification

@@ -1,0 +1,232 @@
+// Stability tier: the hard cases of SPEC §6. Each integrator either meets its tolerance or
+// says it could not; none returns a silently wrong COR.
+#include <cmath>
+
+#include "oracles/hertz.h"
+#include "oracles/linear_model.h"
+#include "oracles/undamped_elastoplastic.h"
+#include "verification/cases.h"
+#include "verification/support.h"
+#include "verification/tolerances.h"
+
+namespace ivv::verification {
+namespace {
+
+std::string name(IntegratorKind k) { return std::string(to_string(k)); }
+bool implicit(IntegratorKind k) {
+  return k == IntegratorKind::odeint_rosenbrock4 || k == IntegratorKind::gsl_msbdf;
+}
+
+void compare(WorstError& w, const ImpactResult& r, const ImpactResult& ref,
+             const std::string& where) {
+  if (r.status != ref.status) {
+    w.fail(where + ": status " + std::string(to_string(r.status)) + " vs reference " +
+           std::string(to_string(ref.status)) + " " + r.reason);
+    return;
+  }
+  w.add_cor(r.e, ref.e, where + " e");
+  w.add(r.F_max, ref.F_max, where + " F_max");
+  w.add(r.z_max, ref.z_max, where + " z_max");
+  if (r.separated()) w.add(r.t_contact, ref.t_contact, where + " t_contact");
+}
+
+// Grazing (1e-6 m/s) and fast (100 m/s) impacts, undamped and damped, against mp50; the
+// undamped grazing one also against the Hertz closed form (it is elastic).
+Outcome velocity_extremes(IntegratorKind k, double v0) {
+  WorstError w;
+  for (double zeta : {0.0, 0.1}) {
+    const SimulationRequest req = request(with(paper_scene(), v0, zeta), LawKind::elastoplastic, k);
+    compare(w, simulate(req), reference(req), "zeta=" + fmt(zeta));
+  }
+  if (v0 < derive(paper_scene()).v_yield) {
+    const Scene s = with(paper_scene(), v0, 0.0);
+    const ImpactResult r = simulate(request(s, LawKind::elastoplastic, k));
+    const auto x = oracles::solve_hertz(s.mass, derive(s).K_h, v0);
+    w.add(r.F_max, x.F_max, "undamped vs Hertz closed form F_max");
+    w.add(r.t_contact, x.t_contact, "undamped vs Hertz closed form t_contact");
+  }
+  return worst_case(w, default_settings_tolerance(k).value, "e, F_max, z_max, t_contact");
+}
+
+// z_m = z_y (1 +- 1e-9): the kink and the maximum compression a hair apart.
+Outcome yield_edge(IntegratorKind k) {
+  WorstError w;
+  const Scene base = paper_scene();
+  const DerivedParameters p = derive(base);
+  for (double delta : {-1e-9, 1e-9}) {
+    double v0;
+    if (delta < 0) {
+      v0 = p.v_yield * std::pow(1 + delta, 1.25);  // Hertz: z_m ~ v0^{4/5}
+    } else {
+      const double d = delta * p.z_y;
+      const double E0 = 0.4 * p.K_h * std::pow(p.z_y, 2.5) + p.K_h * std::pow(p.z_y, 1.5) * d +
+                        0.5 * p.K_y * d * d;
+      v0 = std::sqrt(2 * E0 / base.mass);
+    }
+    const Scene s = with(base, v0, 0.0);
+    const ImpactResult r = simulate(request(s, LawKind::elastoplastic, k));
+    const std::string where = "z_m = z_y (1 " + std::string(delta < 0 ? "- " : "+ ") + "1e-9)";
+    if (!r.separated()) {
+      w.fail(where + ": " + r.reason);
+      continue;
+    }
+    bool yielded = false;
+    for (const auto& ev : r.events) yielded = yielded || ev.kind == EventKind::yield;
+    if (yielded != (delta > 0)) w.fail(where + ": yield event " + (yielded ? "fired" : "missing"));
+    const auto x = oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, p));
+    w.add_cor(r.e, x.e, where + " e");
+    w.add(r.F_max, x.F_max, where + " F_max");
+    w.add(r.z_max, x.z_max, where + " z_max");
+    w.add(r.t_contact, x.t_contact, where + " t_contact");
+  }
+  return worst_case(w, default_settings_tolerance(k).value, "e, F_max, z_max, t_contact");
+}
+
+// Capture: the linearized law with unloading damping zeta/gamma >= 1 never separates (closed
+// form). The run must end "captured" with e = 0 and F_max as the closed form, in bounded steps.
+Outcome capture(IntegratorKind k) {
+  const Scene s = with(paper_scene(), 50.0, 0.6);
+  const auto x = oracles::solve_linear_model(oracles::linear_model_input(s, derive(s)));
+  if (!x.captured) return at_most(INFINITY, 0, "the chosen scene is not a capture in closed form");
+  const ImpactResult r = simulate(request(s, LawKind::linearized, k));
+  WorstError w;
+  if (r.status != ImpactStatus::captured) {
+    w.fail("status " + std::string(to_string(r.status)) + " " + r.reason + ", e = " + fmt(r.e));
+  } else {
+    w.add(r.F_max, x.F_max, "F_max");
+    w.add(r.z_max, x.z_max, "z_max");
+    w.add_cor(r.e, 0.0, "e (must be exactly 0)");
+  }
+  return worst_case(w, default_settings_tolerance(k).value,
+                    "captured status, e = 0, F_max and z_max against the closed form");
+}
+
+// Masses 1e-6 and 1e3 kg against mp50 (the normalisation makes them ordinary problems).
+Outcome mass_extremes(IntegratorKind k) {
+  WorstError w;
+  for (double mass : {1e-6, 1e3}) {
+    Scene s = with(paper_scene(), 1.0, 0.1);
+    s.mass = mass;
+    const SimulationRequest req = request(s, LawKind::elastoplastic, k);
+    compare(w, simulate(req), reference(req), "m=" + fmt(mass) + " kg");
+  }
+  return worst_case(w, default_settings_tolerance(k).value, "e, F_max, z_max, t_contact");
+}
+
+// A weak dashpot (zeta >> 1) is stiff: the spring-dashpot relaxation time c/K is far shorter
+// than the contact. Implicit integrators must capture and agree with each other; zeta 1 and 3
+// are also checked against mp50 (still affordable there).
+Outcome stiff_implicit(IntegratorKind k) {
+  WorstError w;
+  const IntegratorKind other = k == IntegratorKind::gsl_msbdf ? IntegratorKind::odeint_rosenbrock4
+                                                              : IntegratorKind::gsl_msbdf;
+  for (double zeta : {1.0, 3.0}) {
+    const SimulationRequest req = request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
+    compare(w, simulate(req), reference(req), "zeta=" + fmt(zeta) + " vs mp50");
+  }
+  for (double zeta : {100.0, 1000.0}) {
+    const SimulationRequest req = request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
+    SimulationRequest alt = req;
+    alt.integrator = other;
+    const ImpactResult r = simulate(req);
+    const ImpactResult a = simulate(alt);
+    const std::string where = "zeta=" + fmt(zeta) + " vs " + name(other);
+    if (r.status != ImpactStatus::captured || a.status != ImpactStatus::captured) {
+      w.fail(where + ": expected capture, got " + std::string(to_string(r.status)) + " / " +
+             std::string(to_string(a.status)) + " " + r.reason + a.reason);
+      continue;
+    }
+    w.add(r.F_max, a.F_max, where + " F_max");
+    w.add(r.z_max, a.z_max, where + " z_max");
+  }
+  return worst_case(w, 2 * default_settings_tolerance(k).value,
+                    "status and F_max, z_max (mp50 at zeta 1 and 3; the other implicit "
+                    "integrator at zeta 100 and 1000)");
+}
+
+// Explicit integrators on zeta = 1000: meet the tolerance (agree with rosenbrock4) or fail
+// with a reason; a "separated" result with a non-zero COR would be silently wrong.
+Outcome stiff_explicit(IntegratorKind k) {
+  SimulationRequest req = request(with(paper_scene(), 1.0, 1000.0), LawKind::elastoplastic, k);
+  req.options.max_steps = 200000;  // bounded effort: ~1 s of work at most
+  SimulationRequest imp = req;
+  imp.integrator = IntegratorKind::odeint_rosenbrock4;
+  const ImpactResult r = simulate(req);
+  const ImpactResult ref = simulate(imp);
+  if (r.status == ImpactStatus::failed) {
+    Outcome o = at_most(0.0, 0.0,
+                        "could not meet its tolerance and said so (an acceptable outcome): " +
+                            r.reason);
+    return o;
+  }
+  WorstError w;
+  if (r.status != ref.status) {
+    w.fail("status " + std::string(to_string(r.status)) + " with e = " + fmt(r.e) +
+           " where rosenbrock4 finds " + std::string(to_string(ref.status)));
+  } else {
+    w.add(r.F_max, ref.F_max, "F_max vs rosenbrock4");
+    w.add(r.z_max, ref.z_max, "z_max vs rosenbrock4");
+  }
+  return worst_case(w, 2 * default_settings_tolerance(k).value,
+                    "either a reported failure, or capture with F_max, z_max as rosenbrock4");
+}
+
+Outcome linearized_outside_domain() {
+  int said_so = 0;
+  std::string last;
+  for (IntegratorKind k : all_integrators()) {
+    const ImpactResult r = simulate(request(with(paper_scene(), 0.1, 0.1), LawKind::linearized, k));
+    const bool ok = r.failure == FailureKind::law_domain &&
+                    r.reason.find("2.25 z_y") != std::string::npos && r.e == 0.0;
+    said_so += ok;
+    if (!ok) last = name(k) + " returned " + std::string(to_string(r.status)) + " " + r.reason;
+  }
+  const int n = static_cast<int>(all_integrators().size());
+  Outcome o = at_least(said_so, n,
+                       std::to_string(said_so) + " of " + std::to_string(n) +
+                           " integrators stopped with the domain error naming 2.25 z_y" +
+                           (last.empty() ? "" : "; " + last));
+  return o;
+}
+
+}  // namespace
+
+void register_stability_cases(Registry& reg) {
+  for (IntegratorKind k : all_integrators()) {
+    if (k == IntegratorKind::mp50) continue;
+    const Tolerance tol = default_settings_tolerance(k);
+    const std::string n = name(k);
+    reg.add({"stability.grazing-1e-6." + n, "Grazing impact v0 = 1e-6 m/s (" + n + ")",
+             Tier::stability, tol.reason, false, [k] { return velocity_extremes(k, 1e-6); }});
+    reg.add({"stability.fast-100." + n, "Fast impact v0 = 100 m/s (" + n + ")", Tier::stability,
+             tol.reason, false, [k] { return velocity_extremes(k, 100.0); }});
+    reg.add({"stability.yield-edge." + n,
+             "Maximum compression 1e-9 above and below the yield kink (" + n + ")",
+             Tier::stability, tol.reason, false, [k] { return yield_edge(k); }});
+    reg.add({"stability.capture." + n, "Capture (no rebound) ends with e = 0 (" + n + ")",
+             Tier::stability, tol.reason, false, [k] { return capture(k); }});
+    reg.add({"stability.mass-extremes." + n, "Masses 1e-6 and 1e3 kg (" + n + ")",
+             Tier::stability, tol.reason, false, [k] { return mass_extremes(k); }});
+    if (implicit(k)) {
+      reg.add({"stability.stiff-dashpot." + n,
+               "Weak dashpot zeta = 1 to 1000 (stiff): implicit integrator meets its tolerance (" +
+                   n + ")",
+               Tier::stability,
+               std::string(tol.reason) + "; two integrators each within it agree within twice it",
+               false, [k] { return stiff_implicit(k); }});
+    } else {
+      reg.add({"stability.stiff-dashpot." + n,
+               "zeta = 1000: explicit integrator meets its tolerance or reports failure (" + n +
+                   ")",
+               Tier::stability,
+               std::string(tol.reason) + "; against rosenbrock4, itself within it: twice it",
+               false, [k] { return stiff_explicit(k); }});
+    }
+  }
+  reg.add({"stability.linearized-outside-domain",
+           "Linearized law below z_m = 2.25 z_y: every integrator stops with a clear error",
+           Tier::stability, "all of them must say so: a NaN or a number would be silently wrong",
+           false, [] { return linearized_outside_domain(); }});
+}
+
+}  // namespace ivv::verification
