@@ -152,6 +152,40 @@ TEST(Cli, BadSceneFileNamesTheField) {
   EXPECT_NE(r.err.find("(-1, 0.5)"), std::string::npos) << r.err;
 }
 
+TEST(Cli, EveryShippedSceneFileRuns) {
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(IVV_SCENES_DIR)) {
+    if (entry.path().extension() != ".toml") continue;
+    ++scenes;
+    const CliRun r = ivv("simulate --json --scene " + entry.path().string());
+    EXPECT_EQ(r.exit_code, 0) << entry.path() << ": " << r.err;
+  }
+  EXPECT_GE(scenes, 2);
+}
+
+TEST(Cli, FitHcReproducesTheTargets) {
+  const CliRun r = ivv("fit-hc --scene paper --v0 1 --c 11440 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // the fit solves e to ~1e-10 (bracket) and F_max exactly by scaling: 1e-8 either way
+  EXPECT_NEAR(j["e_hc"].get<double>() / j["e"].get<double>(), 1.0, 1e-8);
+  EXPECT_NEAR(j["F_max_hc"].get<double>() / j["F_max"].get<double>(), 1.0, 1e-8);
+  EXPECT_GT(j["t_contact_hc"].get<double>(), j["t_contact_model"].get<double>());
+}
+
+TEST(Cli, VerifyWritesResultsAndReportsFailureByExitCode) {
+  const fs::path json = scratch("results.json");
+  const CliRun r = ivv("verify --filter 'trend.paper.fig9*' --out " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["cases"].size(), 1u);
+  for (const char* key : {"id", "title", "tier", "passed", "measured", "reference", "tolerance",
+                          "reason"})
+    EXPECT_TRUE(j["cases"][0].contains(key)) << key;
+  EXPECT_EQ(ivv("verify --filter 'no.such.case*' --out " + json.string()).exit_code, 2);
+}
+
 TEST(Cli, IntegratorFailureExitsOneWithReason) {
   const CliRun r = ivv("simulate --scene paper --zeta 1000 --integrator rk4 --max-steps 1000");
   EXPECT_EQ(r.exit_code, 1);

@@ -4,6 +4,7 @@
 // Exit codes: 0 success; 1 a computation failed (integrator could not meet its tolerance,
 // a verification case failed); 2 bad input (message names the field and accepted range).
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -13,10 +14,13 @@
 
 #include "app/cli_args.h"
 #include "app/result_json.h"
+#include "bench/benchmarks.h"
 #include "solver/atomic_file.h"
+#include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
+#include "verification/registry.h"
 
 namespace ivv {
 namespace {
@@ -227,6 +231,85 @@ int run_scene_show(const std::string& scene_name, bool json) {
   return 0;
 }
 
+int run_fit_hc(const ModelFlags& f, bool json) {
+  const SimulationRequest req = build_request(f);
+  const HuntCrossleyFit fit = fit_hunt_crossley(req);
+  if (json) {
+    std::cout << nlohmann::json{{"K", fit.K},
+                                {"mu", fit.mu},
+                                {"e", fit.e},
+                                {"F_max", fit.F_max},
+                                {"t_contact_hc", fit.t_contact_hc},
+                                {"t_contact_model", fit.t_contact_model},
+                                {"e_hc", fit.hc.e},
+                                {"F_max_hc", fit.hc.F_max},
+                                {"hc_runs", fit.evaluations}}
+                     .dump(2)
+              << std::endl;
+    return 0;
+  }
+  std::cout << std::setprecision(8) << "Hunt-Crossley fitted to the " << to_string(req.law)
+            << " model at v0 = " << req.scene.velocity << " m/s\n"
+            << "  K  = " << fit.K << " N/m^1.5\n"
+            << "  mu = " << fit.mu << " s/m   (mu v0 = " << fit.mu * req.scene.velocity << ")\n"
+            << "  targets   e = " << fit.e << ", F_max = " << fit.F_max << " N\n"
+            << "  HC gives  e = " << fit.hc.e << ", F_max = " << fit.hc.F_max << " N\n"
+            << "  contact time: model " << fit.t_contact_model * 1e3 << " ms, Hunt-Crossley "
+            << fit.t_contact_hc * 1e3 << " ms\n";
+  return 0;
+}
+
+int run_verify(const std::string& filter, const std::string& out_path, int threads, bool list) {
+  using namespace verification;
+  const auto cases = all_cases().matching(filter);
+  if (cases.empty()) throw InputError("--filter", "no verification case matches '" + filter + "'");
+  if (list) {
+    for (const Case* c : cases)
+      std::cout << c->id << "\t" << to_string(c->tier) << (c->slow ? "\tslow" : "") << "\t"
+                << c->title << "\n";
+    return 0;
+  }
+  if (out_path.empty()) throw InputError("--out", "required (the results JSON file)");
+  if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  const bool tty = isatty(fileno(stderr));
+  const auto records = run_cases(cases, threads, [tty](std::size_t done, std::size_t total,
+                                                       const Case& c) {
+    if (tty) {
+      std::fprintf(stderr, "\r[%zu/%zu] %-70.70s", done, total, c.id.c_str());
+      if (done == total) std::fprintf(stderr, "\n");
+    } else if (done == total || done % std::max<std::size_t>(1, total / 10) == 0) {
+      std::fprintf(stderr, "verify: %zu/%zu cases run\n", done, total);
+    }
+    std::fflush(stderr);
+  });
+  nlohmann::json out = {{"cases", nlohmann::json::array()}};
+  std::size_t failed = 0;
+  for (const CaseRecord& r : records) {
+    const Outcome& o = r.outcome;
+    if (!o.passed) {
+      ++failed;
+      std::cerr << "FAILED " << r.c->id << ": " << o.detail << "\n";
+    }
+    out["cases"].push_back({{"id", r.c->id},
+                            {"title", r.c->title},
+                            {"tier", to_string(r.c->tier)},
+                            {"passed", o.passed},
+                            {"measured", o.measured},
+                            {"reference", o.reference},
+                            {"tolerance", o.tolerance},
+                            {"comparison", to_string(o.comparison)},
+                            {"margin", std::isfinite(o.margin()) ? nlohmann::json(o.margin())
+                                                                 : nlohmann::json(nullptr)},
+                            {"reason", r.c->reason},
+                            {"detail", o.detail},
+                            {"slow", r.c->slow},
+                            {"seconds", r.seconds}});
+  }
+  write_file_atomically(out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; });
+  std::cout << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
+  return failed ? kExitFailure : 0;
+}
+
 }  // namespace
 }  // namespace ivv
 
@@ -277,6 +360,27 @@ int main(int argc, char** argv) {
   integrators->add_flag("-v,--verbose", verbose, "add a description to each");
   auto* laws = app.add_subcommand("laws", "list the contact laws, one per line");
 
+  ModelFlags fit_flags;
+  bool fit_json = false;
+  auto* fit = app.add_subcommand(
+      "fit-hc", "Hunt-Crossley K and mu reproducing a model's F_max and e (as the paper did)");
+  add_model_flags(*fit, fit_flags, true);
+  fit->add_flag("--json", fit_json, "JSON {K, mu, e, F_max, t_contact_hc, t_contact_model}");
+
+  std::string verify_filter, verify_out;
+  int verify_threads = 0;
+  bool verify_list = false;
+  auto* verify = app.add_subcommand("verify", "run the verification cases, write results JSON");
+  verify->add_option("--filter", verify_filter, "only cases whose id matches this glob");
+  verify->add_option("--out", verify_out, "results JSON file");
+  verify->add_option("--threads", verify_threads, "worker threads (0 = all cores)");
+  verify->add_flag("--list", verify_list, "list the matching cases instead of running them");
+
+  auto* bench = app.add_subcommand(
+      "bench", "Google Benchmark timings of one impact per integrator (flags: --benchmark_*)");
+  bench->allow_extras();
+  bench->prefix_command();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -299,6 +403,15 @@ int main(int argc, char** argv) {
         std::cout << "\n";
       }
       return 0;
+    }
+    if (*fit) return run_fit_hc(fit_flags, fit_json);
+    if (*verify) return run_verify(verify_filter, verify_out, verify_threads, verify_list);
+    if (*bench) {
+      std::vector<std::string> extras = bench->remaining();
+      std::vector<char*> args{argv[0]};
+      for (auto& e : extras) args.push_back(e.data());
+      int n = static_cast<int>(args.size());
+      return bench::run_benchmarks(n, args.data());
     }
     if (*laws) {
       for (LawKind k : all_laws()) std::cout << to_string(k) << "\n";
