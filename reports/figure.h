@@ -1,0 +1,40 @@
+// What a report section hands to the page: plots (data, drawn later by gnuplot) with
+// captions, and the options every section shares.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "verification/plot_data.h"
+
+namespace ivv::reports {
+
+struct Figure {
+  verification::Plot plot;  // plot.id is unique within the report
+  std::string caption;      // HTML (escaped by the producer); says what is drawn and with what
+  bool full_width = false;  // alone on its row (otherwise two figures share a row)
+};
+
+struct SectionOptions {
+  bool quick = false;  // fewer sweep points (tests); the figures keep their meaning
+  int threads = 0;     // for sweeps: 0 = all hardware threads
+  std::function<void(const std::string&)> progress;  // one line per stage; may be empty
+  void say(const std::string& line) const {
+    if (progress) progress(line);
+  }
+};
+
+// At most `max_points` of a curve, evenly strided, keeping the first and last point.
+template <class T>
+std::vector<T> thin(const std::vector<T>& v, std::size_t max_points) {
+  if (v.size() <= max_points || max_points < 2) return v;
+  std::vector<T> out;
+  out.reserve(max_points);
+  const double stride = static_cast<double>(v.size() - 1) / static_cast<double>(max_points - 1);
+  for (std::size_t i = 0; i < max_points; ++i)
+    out.push_back(v[static_cast<std::size_t>(static_cast<double>(i) * stride + 0.5)]);
+  return out;
+}
+
+}  // namespace ivv::reports

@@ -1,0 +1,575 @@
+#include "reports/report.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+#include "reports/companions.h"
+#include "reports/figure.h"
+#include "reports/gnuplot_svg.h"
+#include "reports/html.h"
+#include "reports/paper_figures.h"
+#include "reports/provenance.h"
+#include "reports/restitution.h"
+#include "reports/speed_error.h"
+#include "solver/atomic_file.h"
+#include "solver/input_error.h"
+#include "verification/registry.h"
+
+namespace ivv::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using verification::CaseRecord;
+using verification::Plot;
+using verification::Tier;
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Every figure of the page: ids made unique, drawn in parallel, put in place of placeholders.
+class FigureBook {
+ public:
+  // Returns the placeholder to put in the HTML where the figure goes.
+  std::string add(Figure f) {
+    std::string id = slug(f.plot.id.empty() ? "plot" : f.plot.id);
+    for (int n = 2; ids_.count(id); ++n) id = slug(f.plot.id) + "-" + std::to_string(n);
+    ids_.insert(id);
+    f.plot.id = id;
+    figures_.push_back(std::move(f));
+    return placeholder(figures_.size() - 1);
+  }
+
+  // Draws every figure with gnuplot on `threads` workers.
+  void render(int threads, const SectionOptions& say) {
+    svgs_.assign(figures_.size(), {});
+    errors_.assign(figures_.size(), {});
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t i = next++; i < figures_.size(); i = next++) {
+        try {
+          svgs_[i] =
+              render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id);
+          const SvgCheck check = check_svg(svgs_[i]);
+          if (!check.ok())
+            errors_[i] = "gnuplot drew " + std::to_string(check.drawn_series) + " of " +
+                         std::to_string(check.series) + " series";
+        } catch (const std::exception& e) {
+          errors_[i] = e.what();
+        }
+      }
+    };
+    const int n = std::max(
+        1,
+        std::min<int>(threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()),
+                      static_cast<int>(figures_.size())));
+    say.say("drawing " + std::to_string(figures_.size()) + " plots with gnuplot");
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+  }
+
+  std::string resolve(std::string html) const {
+    for (std::size_t i = 0; i < figures_.size(); ++i) {
+      const std::string key = placeholder(i);
+      const auto pos = html.find(key);
+      if (pos != std::string::npos) html.replace(pos, key.size(), figure_html(i));
+    }
+    return html;
+  }
+
+  std::vector<const Plot*> plots() const {
+    std::vector<const Plot*> out;
+    for (const auto& f : figures_) out.push_back(&f.plot);
+    return out;
+  }
+  std::size_t size() const { return figures_.size(); }
+  std::size_t errors() const {
+    return static_cast<std::size_t>(
+        std::count_if(errors_.begin(), errors_.end(), [](const auto& e) { return !e.empty(); }));
+  }
+
+ private:
+  static std::string placeholder(std::size_t i) {
+    return "<!--ivv-figure-" + std::to_string(i) + "-->";
+  }
+  std::string figure_html(std::size_t i) const {
+    const Figure& f = figures_[i];
+    std::string out =
+        "<figure id=\"fig-" + f.plot.id + "\"" + (f.full_width ? " class=\"wide\"" : "") + ">\n";
+    if (errors_[i].empty()) {
+      out += svgs_[i];
+    } else {
+      out += "<div class=\"plot-error\" data-plot-id=\"" + escape(f.plot.id) +
+             "\">This plot could not be drawn: " + escape(errors_[i]) + "</div>";
+    }
+    out += "\n<figcaption><b class=\"ftitle\">" + escape(f.plot.title) + "</b>" + f.caption +
+           "</figcaption>\n";
+    out += "</figure>\n";
+    return out;
+  }
+
+  std::vector<Figure> figures_;
+  std::set<std::string> ids_;
+  std::vector<std::string> svgs_, errors_;
+};
+
+std::string pass_fail(bool passed) {
+  return passed ? "<span class=\"pass\">pass</span>" : "<span class=\"fail\">FAIL</span>";
+}
+
+std::string num_cell(double v, int digits = 6) {
+  return std::isnan(v) ? std::string("—") : number(v, digits);
+}
+
+std::string case_anchor(const std::string& id) {
+  return "case-" + slug(id);
+}
+
+// A computation of one section that may throw: its HTML, or an error box.
+struct SectionResult {
+  std::string html;
+  std::optional<std::string> error;
+};
+
+template <class F>
+SectionResult guarded(const std::string& name, const SectionOptions& so, F&& f) {
+  SectionResult r;
+  try {
+    r.html = f();
+  } catch (const std::exception& e) {
+    r.error = e.what();
+    r.html = "<div class=\"plot-error\">The " + escape(name) +
+             " section could not be computed: " + escape(e.what()) + "</div>\n";
+    so.say(name + ": FAILED: " + e.what());
+  }
+  return r;
+}
+
+// ---- section 1 ---------------------------------------------------------------------------
+
+std::string summary_html(const std::vector<CaseRecord>& records, const Provenance& prov,
+                         const ReportOptions& opt, const std::vector<std::string>& section_errors,
+                         const std::vector<std::pair<std::string, double>>& stage_seconds) {
+  std::size_t failed = 0;
+  for (const auto& r : records) failed += r.outcome.passed ? 0 : 1;
+  const bool ok = failed == 0 && section_errors.empty();
+  std::string out = "<h2 id=\"summary\" class=\"first\">1. Summary</h2>\n";
+  out += std::string("<div class=\"verdict ") + (ok ? "pass" : "fail") + "\" id=\"verdict\">";
+  if (ok) {
+    out += "PASS: all " + std::to_string(records.size()) + " verification cases passed";
+  } else {
+    out += "FAIL: " + std::to_string(failed) + " of " + std::to_string(records.size()) +
+           " verification cases failed";
+    if (!section_errors.empty())
+      out +=
+          ", " + std::to_string(section_errors.size()) + " report section(s) could not be computed";
+  }
+  out += "</div>\n";
+  if (opt.allow_failures && !ok)
+    out +=
+        "<p class=\"note\">Written with --allow-failures: failures do not change the exit "
+        "status of this run.</p>\n";
+  if (!opt.filter.empty() && opt.filter != "*")
+    out += "<p class=\"note\">Only the cases matching <code>" + escape(opt.filter) +
+           "</code> were run.</p>\n";
+
+  // Counts per tier.
+  std::vector<std::vector<std::string>> rows;
+  for (Tier t : verification::all_tiers()) {
+    std::size_t n = 0, pass = 0;
+    for (const auto& r : records) {
+      if (r.c->tier != t) continue;
+      ++n;
+      pass += r.outcome.passed ? 1 : 0;
+    }
+    if (n == 0) continue;
+    rows.push_back(
+        {"<a href=\"#tier-" + slug(std::string(verification::to_string(t))) + "\">" +
+             escape(std::string(verification::to_string(t))) + "</a>",
+         std::to_string(n), std::to_string(pass),
+         n == pass ? "0" : "<span class=\"fail\">" + std::to_string(n - pass) + "</span>"});
+  }
+  out += "<h3>Cases per evidence tier</h3>\n" +
+         table({"tier", "cases", "passed", "failed"}, rows, "data counts");
+
+  if (failed > 0 || !section_errors.empty()) {
+    out += "<h3 id=\"failures\">What fell short</h3>\n";
+    std::vector<std::vector<std::string>> frows;
+    for (const auto& r : records) {
+      if (r.outcome.passed) continue;
+      frows.push_back({"<a href=\"#" + case_anchor(r.c->id) + "\"><code>" + escape(r.c->id) +
+                           "</code></a><br>" + escape(r.c->title),
+                       escape(comparison_text(r.outcome)), escape(r.outcome.detail)});
+    }
+    for (const auto& e : section_errors) frows.push_back({"report section", "", escape(e)});
+    out += table({"case", "comparison", "detail"}, frows, "data failures");
+  }
+
+  out += "<h3>Provenance</h3>\n<dl class=\"prov\">\n";
+  auto item = [&](const std::string& k, const std::string& v) {
+    out += "<dt>" + escape(k) + "</dt><dd>" + v + "</dd>\n";
+  };
+  item("git commit", "<code>" + escape(prov.git_commit) + "</code>" +
+                         (prov.git_dirty ? " (working tree with uncommitted changes)" : ""));
+  item("compiler", escape(prov.compiler));
+  item("flags", "<code>" + escape(prov.flags.empty() ? "(none)" : prov.flags) + "</code>");
+  item("build type", escape(prov.build_type.empty() ? "(unspecified)" : prov.build_type));
+  std::string libs;
+  for (const auto& [name, version] : prov.libraries)
+    libs += (libs.empty() ? "" : ", ") + escape(name) + " " + escape(version);
+  item("libraries", libs);
+  item("date (UTC)", escape(prov.date_utc));
+  item("machine", escape(prov.cpu_model) + ", " + std::to_string(prov.logical_cores) +
+                      " logical cores, host " + escape(prov.host));
+  item("command", "<code>" + escape(prov.command_line.empty() ? "(not given)" : prov.command_line) +
+                      "</code>");
+  std::string stages;
+  double total = 0;
+  for (const auto& [name, s] : stage_seconds) {
+    stages += (stages.empty() ? "" : "; ") + escape(name) + " " + number(s, 3) + " s";
+    total += s;
+  }
+  item("run time",
+       number(total, 3) + " s (" + stages + "), " +
+           std::to_string(opt.threads > 0 ? opt.threads
+                                          : static_cast<int>(std::thread::hardware_concurrency())) +
+           " threads" + (opt.quick ? ", quick mode (fewer sweep points)" : ""));
+  out += "</dl>\n";
+  return out;
+}
+
+// ---- section 4 ---------------------------------------------------------------------------
+
+std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book) {
+  std::string out = "<h2 id=\"cases\">4. Every verification case</h2>\n";
+  out +=
+      "<p>Each case measures one number and compares it with a reference under a tolerance "
+      "whose reason is stated (<code>verification/</code>, the same registry that ctest "
+      "runs). <i>Margin</i> is tolerance/error for ≤ comparisons and measured/bound for ≥ "
+      "ones: above 1 passes. Expand a row for the detail and the case's plots.</p>\n";
+  if (records.empty()) out += "<p>No case was run.</p>\n";
+  for (Tier t : verification::all_tiers()) {
+    std::vector<const CaseRecord*> in_tier;
+    for (const auto& r : records)
+      if (r.c->tier == t) in_tier.push_back(&r);
+    if (in_tier.empty()) continue;
+    std::stable_partition(in_tier.begin(), in_tier.end(),
+                          [](const CaseRecord* r) { return !r->outcome.passed; });
+    const std::string tier(verification::to_string(t));
+    out += "<h3 id=\"tier-" + slug(tier) + "\">" + escape(tier) + " (" +
+           std::to_string(in_tier.size()) + " cases)</h3>\n";
+    out +=
+        "<table class=\"data cases\"><colgroup><col class=\"c-id\"><col class=\"c-num\">"
+        "<col class=\"c-num\"><col class=\"c-tol\"><col class=\"c-cmp\"><col class=\"c-reason\">"
+        "<col class=\"c-margin\"><col class=\"c-verdict\"></colgroup>\n<thead><tr><th>case</th>"
+        "<th class=\"num\">measured</th><th class=\"num\">reference</th>"
+        "<th class=\"num\">tolerance</th><th>comparison</th><th>why this tolerance</th>"
+        "<th class=\"num\">margin</th><th>verdict</th></tr></thead>\n<tbody>\n";
+    for (const CaseRecord* r : in_tier) {
+      const auto& o = r->outcome;
+      const std::string anchor = case_anchor(r->c->id);
+      out += std::string("<tr id=\"") + anchor + "\"" + (o.passed ? "" : " class=\"failed\"") +
+             "><td><code>" + escape(r->c->id) + "</code><br>" + escape(r->c->title) + "</td>" +
+             "<td class=\"num\">" + num_cell(o.measured, 6) + "</td><td class=\"num\">" +
+             num_cell(o.reference, 6) + "</td><td class=\"num\">" + num_cell(o.tolerance, 3) +
+             "</td><td>" + escape(std::string(verification::to_string(o.comparison))) +
+             "</td><td class=\"reason\">" + escape(r->c->reason) + "</td><td class=\"num\">" +
+             number(o.margin(), 3) + "</td><td>" + pass_fail(o.passed) + "</td></tr>\n";
+      std::string detail = "<p>" + escape(o.detail) + "</p><p>" + escape(comparison_text(o)) +
+                           "; run time " + number(r->seconds, 3) + " s.</p>\n";
+      for (std::size_t i = 0; i < o.plots.size(); ++i) {
+        Figure f{o.plots[i], ""};
+        f.plot.id = r->c->id + "." + (f.plot.id.empty() ? "plot" + std::to_string(i) : f.plot.id);
+        detail += book.add(std::move(f));
+      }
+      const std::string what = o.plots.empty() ? "detail"
+                                               : "detail and " + std::to_string(o.plots.size()) +
+                                                     (o.plots.size() == 1 ? " plot" : " plots");
+      out += std::string("<tr class=\"detail") + (o.passed ? "" : " failed") +
+             "\"><td colspan=\"8\"><details class=\"case\"" + (o.passed ? "" : " open") +
+             "><summary>" + what + "</summary><div>" + detail + "</div></details></td></tr>\n";
+    }
+    out += "</tbody></table>\n";
+  }
+  return out;
+}
+
+// ---- sections 2, 3, 5 --------------------------------------------------------------------
+
+// Figures in order: consecutive half-width ones side by side in a two-column grid, full-width
+// ones alone.
+std::string figures_html(const std::vector<Figure>& figures, FigureBook& book) {
+  std::string out;
+  bool in_grid = false;
+  for (const auto& f : figures) {
+    if (f.full_width == in_grid) {
+      out += in_grid ? "</div>\n" : "<div class=\"grid2\">\n";
+      in_grid = !in_grid;
+    }
+    out += book.add(f);
+  }
+  return out + (in_grid ? "</div>\n" : "");
+}
+
+std::string paper_html(const SectionOptions& so, FigureBook& book) {
+  std::string out =
+      "<p>The figures of the paper (<i>A nonlinear visco-elastoplastic impact model and the "
+      "coefficient of restitution</i>, Table 1 scene) recomputed by this library: the nonlinear "
+      "model by numerical integration (odeint-dopri5, rtol 1e-10, events located), the "
+      "linearized model in closed form, Hunt-Crossley fitted by <code>fit_hunt_crossley</code>. "
+      "The paper's own fitted Hunt-Crossley values are withheld; nothing here uses them. Where "
+      "the paper does not state a parameter (the S<sub>y</sub> and mass values of Figs 8-9, the "
+      "velocities and damping ratios of Figs 10-14) the captions say which were used.</p>\n"
+      "<p>" +
+      paper_parameters_html() + "</p>\n";
+  return out + figures_html(paper_figures(so), book);
+}
+
+std::string restitution_html(const SectionOptions& so, FigureBook& book) {
+  const RestitutionSection r = restitution_section(so);
+  std::string out =
+      "<p>Restitution of the elastoplastic law against the published trends "
+      "(SPEC §3).</p>\n";
+  out += book.add(r.figures.at(0));
+  std::string t =
+      "<table class=\"data slopes\"><thead><tr><th class=\"num\">v0/v_y</th>"
+      "<th class=\"num\">e (closed form)</th><th class=\"num\">d ln e/d ln v0 "
+      "(closed form)</th><th class=\"num\">d ln e/d ln v0 (simulated)</th>"
+      "<th class=\"num\">e / asymptote</th></tr></thead><tbody>\n";
+  for (const auto& s : r.slopes)
+    t += "<tr><td class=\"num\">" + number(s.velocity_ratio, 4) + "</td><td class=\"num\">" +
+         number(s.e, 6) + "</td><td class=\"num\">" + number(s.slope_closed_form, 5) +
+         "</td><td class=\"num\">" + number(s.slope_simulated, 5) + "</td><td class=\"num\">" +
+         number(s.e_over_asymptote, 5) + "</td></tr>\n";
+  t += "</tbody></table>\n";
+  out +=
+      "<h3>Local slope of the undamped COR</h3>\n<p>Central differences over v<sub>0</sub>(1 ± " +
+      number(r.log_step) +
+      "), of the closed form and of simulations (odeint-dopri5, rtol = "
+      "atol = 1e-12). The slope tends to −1/4 from below only slowly; it is not −1/4 just "
+      "above yield.</p>\n" +
+      t;
+  out += figures_html({r.figures.begin() + 1, r.figures.end()}, book);
+  std::string mt = "<table class=\"data maps\"><thead><tr><th>map</th><th>μ(e, v0)</th>";
+  for (double e : r.map_targets) mt += "<th class=\"num\">target e = " + number(e) + "</th>";
+  mt += "</tr></thead><tbody>\n";
+  for (const auto& m : r.maps) {
+    mt += "<tr><td>" + escape(m.name) + "</td><td><code>" + escape(m.formula) + "</code></td>";
+    for (double d : m.delivered) mt += "<td class=\"num\">" + number(d, 4) + "</td>";
+    mt += "</tr>\n";
+  }
+  mt += "</tbody></table>\n";
+  out += "<h3>What each Hunt-Crossley damping map delivers</h3>\n" + mt;
+  return out;
+}
+
+std::string status_cell(const HardCaseCell& c) {
+  const ImpactResult& r = c.result;
+  std::string s = "<b>" + escape(std::string(to_string(r.status))) + "</b>";
+  if (r.ok())
+    s += "<br>e = " + number(r.e, 8);
+  else
+    s += "<br><small>" + escape(r.reason) + "</small>";
+  s += "<br>" + std::to_string(r.steps) + " steps, " + number(c.seconds * 1e3, 3) + " ms";
+  return s;
+}
+
+std::string speed_html(const SectionOptions& so, FigureBook& book) {
+  const SpeedSection s = speed_section(so);
+  std::string out = "<p>Timings: single-threaded wall clock on " + escape(s.machine.cpu_model) +
+                    " (" + std::to_string(s.machine.logical_cores) + " logical cores), " +
+                    escape(s.machine.compiler) + ", " + escape(s.machine.build_type) +
+                    " build. They are information, never pass/fail; compare integrators "
+                    "within one study rather than absolute times across machines.</p>\n";
+  std::size_t fig = 0;
+  for (const auto& study : s.studies) {
+    out += "<h3>Work-precision: " + escape(study.label) + "</h3>\n<div class=\"grid2\">\n";
+    out += book.add(s.figures.at(fig++));
+    out += book.add(s.figures.at(fig++));
+    out += "</div>\n";
+    std::string t =
+        "<table class=\"data\"><thead><tr><th>integrator</th><th class=\"num\">"
+        "tolerance</th><th class=\"num\">time/impact [s]</th><th class=\"num\">"
+        "error e</th><th class=\"num\">error F_max</th><th class=\"num\">error "
+        "t_f</th><th class=\"num\">steps</th><th class=\"num\">RHS evals</th>"
+        "<th>status</th></tr></thead><tbody>\n";
+    for (const auto& series : study.series)
+      for (const auto& p : series.points)
+        t += "<tr><td>" + escape(std::string(to_string(series.integrator))) +
+             "</td><td class=\"num\">" + number(p.tolerance, 3) + "</td><td class=\"num\">" +
+             number(p.seconds_per_impact, 3) + "</td><td class=\"num\">" + number(p.error_e, 3) +
+             "</td><td class=\"num\">" + number(p.error_F_max, 3) + "</td><td class=\"num\">" +
+             number(p.error_t_contact, 3) + "</td><td class=\"num\">" + std::to_string(p.steps) +
+             "</td><td class=\"num\">" + std::to_string(p.rhs_evaluations) + "</td><td>" +
+             (p.ok ? std::string("ok") : "<span class=\"fail\">" + escape(p.reason) + "</span>") +
+             "</td></tr>\n";
+    t += "</tbody></table>\n";
+    out += "<details class=\"case\"><summary>every point of this study</summary><div>" + t +
+           "</div></details>\n";
+  }
+  out += "<h3>Convergence order</h3>\n";
+  out += book.add(s.figures.at(fig++));
+  std::vector<std::vector<std::string>> crows;
+  for (const auto& c : s.convergence)
+    crows.push_back({escape(std::string(to_string(c.integrator))),
+                     c.events_located ? "located on the interpolant" : "at step ends only",
+                     number(c.fitted_order, 4)});
+  out += table({"integrator", "events", "fitted order"}, crows);
+
+  out +=
+      "<h3>Hard cases</h3>\n<p>Each integrator with its defaults (rtol 1e-10; rk4 dt = 1e-3 "
+      "in τ) on the hard scenes of SPEC §6: status, e, accepted steps and wall time of one "
+      "run. A solver that cannot meet its tolerance must say so (status failed), never "
+      "return a silently wrong COR.</p>\n";
+  std::string t = "<table class=\"data hard\"><thead><tr><th>scene</th><th>independent e</th>";
+  if (!s.hard_cases.empty())
+    for (const auto& c : s.hard_cases.front().cells)
+      t += "<th>" + escape(std::string(to_string(c.integrator))) + "</th>";
+  t += "</tr></thead><tbody>\n";
+  for (const auto& row : s.hard_cases) {
+    t += "<tr><td><b>" + escape(row.name) + "</b><br><small>" + row.description +
+         "</small></td><td>" + num_cell(row.reference_e, 10) + "<br><small>" +
+         escape(row.reference_source) + "</small></td>";
+    for (const auto& c : row.cells) t += "<td>" + status_cell(c) + "</td>";
+    t += "</tr>\n";
+  }
+  t += "</tbody></table>\n";
+  return out + t;
+}
+
+std::string companions_html() {
+  return "<h2 id=\"companions\">6. Machine-readable companions</h2>\n"
+         "<p>Beside this page, in the same directory:</p><ul>\n"
+         "<li><a href=\"results.json\"><code>results.json</code></a>: "
+         "<code>{\"cases\": [{\"id\", \"title\", \"tier\", \"passed\", \"measured\", "
+         "\"reference\", \"tolerance\", \"reason\", \"comparison\", \"margin\", \"detail\", "
+         "\"seconds\"}]}</code>, the shape of <code>ivv verify</code> (non-finite numbers are "
+         "null).</li>\n"
+         "<li><a href=\"series.csv\"><code>series.csv</code></a>: every plotted series of this "
+         "page, one row per point, columns <code>plot_id,series,x,y</code>; "
+         "<code>plot_id</code> is the <code>data-plot-id</code> of the plot's SVG and the "
+         "anchor <code>#fig-&lt;plot_id&gt;</code>.</li>\n"
+         "<li><a href=\"junit.xml\"><code>junit.xml</code></a>: one test suite per evidence "
+         "tier, one test case per verification case, failures with their detail.</li>\n"
+         "</ul>\n";
+}
+
+void check_out_dir(const fs::path& dir) {
+  if (dir.empty()) throw InputError("--out", "an output directory is required");
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError("--out", "'" + dir.string() + "' exists and is not a directory");
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError("--out", "cannot create the directory '" + dir.string() +
+                                  "': " + (ec ? ec.message() : std::string("not a directory")));
+}
+
+}  // namespace
+
+ReportSummary write_report(const ReportOptions& opt) {
+  const auto start = Clock::now();
+  if (opt.out_dir.empty()) throw InputError("--out", "an output directory is required");
+  const auto selected = verification::all_cases().matching(opt.filter);
+  if (selected.empty())
+    throw InputError("--filter", "no verification case id matches '" + opt.filter +
+                                     "' (shell-style glob with * and ?)");
+  check_out_dir(opt.out_dir);
+
+  SectionOptions so;
+  so.quick = opt.quick;
+  so.threads = opt.threads;
+  so.progress = opt.progress;
+  std::vector<std::pair<std::string, double>> stages;
+
+  so.say("provenance");
+  const Provenance prov = collect_provenance(opt.command_line);
+
+  so.say("verification cases: running " + std::to_string(selected.size()) + " on " +
+         (opt.threads > 0 ? std::to_string(opt.threads) : std::string("all")) + " threads");
+  auto t0 = Clock::now();
+  const auto records = verification::run_cases(
+      selected, opt.threads, [&](std::size_t done, std::size_t total, const verification::Case& c) {
+        so.say("case " + std::to_string(done) + "/" + std::to_string(total) + " done: " + c.id);
+      });
+  stages.emplace_back("cases", seconds_since(t0));
+  std::size_t failed = 0;
+  for (const auto& r : records)
+    if (!r.outcome.passed) {
+      ++failed;
+      so.say("case FAILED: " + r.c->id + ": " + r.outcome.detail);
+    }
+
+  FigureBook book;
+  std::vector<std::string> section_errors;
+  auto section = [&](const std::string& name, auto&& body) {
+    const auto t = Clock::now();
+    SectionResult r = guarded(name, so, [&] { return body(so, book); });
+    stages.emplace_back(name, seconds_since(t));
+    if (r.error) section_errors.push_back(name + ": " + *r.error);
+    return r.html;
+  };
+  const std::string paper = section("paper figures", paper_html);
+  const std::string restitution = section("restitution trends", restitution_html);
+  const std::string cases = cases_html(records, book);
+  const std::string speed = section("speed against error", speed_html);
+
+  t0 = Clock::now();
+  book.render(opt.threads, so);
+  stages.emplace_back("plots", seconds_since(t0));
+
+  std::string body =
+      "<header><h1>ivv verification report</h1>\n<p class=\"lead\">"
+      "Visco-elastoplastic impact model: verification cases, the paper's figures, "
+      "restitution trends and speed against error. Generated " +
+      escape(prov.date_utc) + " from commit <code>" + escape(prov.git_commit.substr(0, 12)) +
+      "</code>.</p></header>\n";
+  body +=
+      "<nav class=\"toc\"><b>Contents</b><ol>"
+      "<li><a href=\"#summary\">Summary</a></li>"
+      "<li><a href=\"#paper\">The paper reproduced</a></li>"
+      "<li><a href=\"#restitution\">Restitution trends</a></li>"
+      "<li><a href=\"#cases\">Every verification case</a></li>"
+      "<li><a href=\"#speed\">Speed against error</a></li>"
+      "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
+  body += summary_html(records, prov, opt, section_errors, stages);
+  body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
+  body += "<h2 id=\"restitution\">3. Restitution trends</h2>\n" + restitution;
+  body += cases;
+  body += "<h2 id=\"speed\">5. Speed against error</h2>\n" + speed;
+  body += companions_html();
+  const std::string html = page("ivv verification report", book.resolve(body));
+
+  so.say("writing index.html, results.json, series.csv, junit.xml to " + opt.out_dir.string());
+  write_file_atomically(opt.out_dir / "results.json",
+                        [&](std::ostream& os) { os << results_json(records); });
+  write_file_atomically(opt.out_dir / "series.csv",
+                        [&](std::ostream& os) { os << series_csv(book.plots()); });
+  write_file_atomically(opt.out_dir / "junit.xml",
+                        [&](std::ostream& os) { os << junit_xml(records); });
+  write_file_atomically(opt.out_dir / "index.html", [&](std::ostream& os) { os << html; });
+
+  ReportSummary summary;
+  summary.cases = records.size();
+  summary.failed = failed;
+  summary.passed = records.size() - failed;
+  summary.plots = book.size();
+  summary.plot_errors = book.errors();
+  summary.section_errors = section_errors.size();
+  summary.seconds = seconds_since(start);
+  summary.index_html = opt.out_dir / "index.html";
+  so.say("report written: " + summary.index_html.string() + " (" + number(summary.seconds, 3) +
+         " s)");
+  return summary;
+}
+
+}  // namespace ivv::reports

@@ -1,0 +1,47 @@
+// The HTML verification report (SPEC §4, "ivv report"): one self-contained DIR/index.html
+// (no script, no network, no external file; plots are inline SVG drawn by gnuplot; a print
+// style sheet) with, in order:
+//   1. Summary: overall verdict, counts per tier, failing cases first, provenance.
+//   2. The paper reproduced: Figs 2-14 (reports/paper_figures.h).
+//   3. Restitution trends (reports/restitution.h).
+//   4. Every verification case of verification::all_cases() matching the filter, run on all
+//      cores, in tables per tier with an expandable detail and the case's plots.
+//   5. Speed against error (reports/speed_error.h).
+//   6. Machine-readable companions beside index.html (reports/companions.h): results.json,
+//      series.csv (every plotted series: plot_id,series,x,y) and junit.xml.
+// Every file is written atomically (solver/atomic_file.h).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace ivv::reports {
+
+struct ReportOptions {
+  std::filesystem::path out_dir;  // created if missing
+  std::string filter;             // glob over case ids ("" or "*": all)
+  int threads = 0;                // for cases and sweeps; 0 = all hardware threads
+  bool allow_failures = false;    // recorded in the summary; the caller decides the exit code
+  std::string command_line;       // for provenance
+  std::function<void(const std::string&)> progress;  // one line per stage and per case
+  bool quick = false;  // fewer sweep and bench points (tests); same sections
+};
+
+struct ReportSummary {
+  std::size_t cases = 0, passed = 0, failed = 0;
+  std::size_t plots = 0;           // plots in the page
+  std::size_t plot_errors = 0;     // plots that could not be drawn (shown as such in the page)
+  std::size_t section_errors = 0;  // sections 2, 3, 5 whose computation threw (shown in the
+                                   // page, and the overall verdict is then FAIL)
+  double seconds = 0.0;            // wall clock of write_report
+  std::filesystem::path index_html;
+};
+
+// Throws InputError (solver/input_error.h) for an out_dir that is empty, is not a directory
+// or cannot be created, and for a filter that matches no case; std::runtime_error if a file
+// cannot be written. A section whose computation throws is reported in the page, not thrown.
+ReportSummary write_report(const ReportOptions& options);
+
+}  // namespace ivv::reports

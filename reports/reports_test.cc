@@ -1,0 +1,215 @@
+// Unit tests of the report's parts: HTML helpers, gnuplot SVG rendering and its check, the
+// machine-readable companions, the restitution asymptote, and write_report's input errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "oracles/undamped_elastoplastic.h"
+#include "reports/companions.h"
+#include "reports/gnuplot_svg.h"
+#include "reports/html.h"
+#include "reports/paper_figures.h"
+#include "reports/report.h"
+#include "reports/restitution.h"
+#include "solver/input_error.h"
+#include "solver/scene.h"
+
+namespace ivv::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using verification::CaseRecord;
+using verification::Plot;
+using verification::Series;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+Plot two_curves() {
+  Plot p;
+  p.id = "unit";
+  p.title = "two curves";
+  p.x_label = "x [m]";
+  p.y_label = "y [N]";
+  Series a{"a's curve", {0, 1, 2, 3}, {0, 1, 4, 9}, Series::Style::lines};
+  Series b{"b", {0, 1, 2, 3}, {1, 2, 3, 4}, Series::Style::points};
+  p.series = {a, b};
+  return p;
+}
+
+TEST(Html, EscapesMarkupAndQuotes) {
+  EXPECT_EQ(escape("<a href=\"x\">Tom & Jerry's</a>"),
+            "&lt;a href=&quot;x&quot;&gt;Tom &amp; Jerry&#39;s&lt;/a&gt;");
+}
+
+TEST(Html, NumbersSpellOutNonFinite) {
+  EXPECT_EQ(number(kNaN), "NaN");
+  EXPECT_EQ(number(std::numeric_limits<double>::infinity()), "inf");
+  EXPECT_EQ(number(0.125, 3), "0.125");
+  EXPECT_EQ(number_html(1.115e9, 4), "1.115×10<sup>9</sup>");
+  EXPECT_EQ(number_html(9.99996e8, 4), "1×10<sup>9</sup>");  // rounding carries the exponent
+  EXPECT_EQ(number_html(39.16, 4), "39.16");
+  EXPECT_EQ(slug("analytic.hertz undamped/x"), "analytic-hertz-undamped-x");
+}
+
+TEST(Html, PageIsSelfContained) {
+  const std::string html = page("t", "<p>body</p>");
+  EXPECT_NE(html.find("<!DOCTYPE html>"), std::string::npos);
+  EXPECT_NE(html.find("@media print"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("http"), std::string::npos);
+}
+
+TEST(GnuplotScript, SkipsNonFiniteAndNonPositiveOnLogAxes) {
+  Plot p = two_curves();
+  p.log_y = true;
+  p.series[0].y = {0, 1, kNaN, 9};  // 0 is not drawable on a log axis, NaN nowhere
+  const std::string gp = gnuplot_script(p);
+  EXPECT_EQ(gp.find("nan"), std::string::npos);
+  EXPECT_NE(gp.find("set logscale y"), std::string::npos);
+  EXPECT_NE(gp.find("'a''s curve'"), std::string::npos);  // gnuplot quoting of '
+  // the surviving points of series 0: (1, 1) and, after a gap, (3, 9)
+  EXPECT_NE(gp.find("$d0 << EOD\n1 1\n\n3 9\nEOD"), std::string::npos);
+}
+
+TEST(GnuplotScript, EmptyPlotIsAnError) {
+  Plot p = two_curves();
+  for (auto& s : p.series) s.y.assign(s.x.size(), kNaN);
+  EXPECT_THROW(gnuplot_script(p), EmptyPlot);
+  p.series.clear();
+  EXPECT_THROW(gnuplot_script(p), EmptyPlot);
+}
+
+TEST(RenderSvg, DrawsEverySeriesWithPrefixedIds) {
+  const std::string svg = render_svg(two_curves(), "fig 1");
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u) << "the XML prologue must be dropped for inlining";
+  EXPECT_EQ(svg.find("<?xml"), std::string::npos);
+  EXPECT_NE(svg.find("data-plot-id=\"unit\""), std::string::npos);
+  EXPECT_NE(svg.find("id='fig-1-gpPt0'"), std::string::npos);
+  EXPECT_EQ(svg.find("'#gpPt"), std::string::npos) << "unprefixed reference left";
+  EXPECT_NE(svg.find("<title>a&#39;s curve</title>"), std::string::npos);
+  const SvgCheck check = check_svg(svg);
+  EXPECT_TRUE(check.ok());
+  EXPECT_EQ(check.series, 2);
+  EXPECT_EQ(check.drawn_series, 2);
+}
+
+TEST(RenderSvg, CheckSeesASeriesThatDrawsOnlyItsKey) {
+  Plot p = two_curves();
+  p.series[0].x = {1};  // one point drawn with lines: nothing but the key sample
+  p.series[0].y = {1};
+  const SvgCheck check = check_svg(render_svg(p, "k"));
+  EXPECT_EQ(check.series, 2);
+  EXPECT_EQ(check.drawn_series, 1);
+  EXPECT_FALSE(check.ok());
+  EXPECT_FALSE(check_svg("<svg></svg>").ok());
+}
+
+CaseRecord record(const verification::Case& c, verification::Outcome o, double seconds) {
+  CaseRecord r;
+  r.c = &c;
+  r.outcome = std::move(o);
+  r.seconds = seconds;
+  return r;
+}
+
+TEST(Companions, ResultsJsonHasTheVerifyShape) {
+  verification::Case a{"analytic.a", "A", verification::Tier::analytic, "because", false, {}};
+  verification::Case b{"stability.b", "B", verification::Tier::stability, "why", false, {}};
+  const std::vector<CaseRecord> records = {
+      record(a, verification::relative(1.0, 1.0 + 1e-9, 1e-6, "close"), 0.5),
+      record(b, verification::at_most(kNaN, 1e-3, "no measurement"), 0.25)};
+  const auto json = nlohmann::json::parse(results_json(records));
+  ASSERT_EQ(json.at("cases").size(), 2u);
+  const auto& first = json["cases"][0];
+  for (const char* key :
+       {"id", "title", "tier", "passed", "measured", "reference", "tolerance", "reason"})
+    EXPECT_TRUE(first.contains(key)) << key;
+  EXPECT_EQ(first["id"], "analytic.a");
+  EXPECT_EQ(first["tier"], "analytic");
+  EXPECT_EQ(first["passed"], true);
+  EXPECT_TRUE(json["cases"][1]["measured"].is_null());
+  EXPECT_TRUE(json["cases"][1]["reference"].is_null());
+  EXPECT_EQ(json["cases"][1]["passed"], false);
+}
+
+TEST(Companions, JunitGroupsByTierAndDetailsFailures) {
+  verification::Case a{"analytic.a", "A", verification::Tier::analytic, "because", false, {}};
+  verification::Case b{"stability.<b>", "B", verification::Tier::stability, "why", false, {}};
+  const std::vector<CaseRecord> records = {
+      record(a, verification::relative(1.0, 1.0, 1e-6, "exact"), 0.5),
+      record(b, verification::at_most(2e-3, 1e-3, "error too large"), 0.25)};
+  const std::string xml = junit_xml(records);
+  EXPECT_NE(xml.find("<testsuites name=\"ivv verification\" tests=\"2\" failures=\"1\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("<testsuite name=\"analytic\" tests=\"1\" failures=\"0\""), std::string::npos);
+  EXPECT_NE(xml.find("<testsuite name=\"stability\" tests=\"1\" failures=\"1\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("name=\"stability.&lt;b&gt;\""), std::string::npos);
+  EXPECT_NE(xml.find("<failure message="), std::string::npos);
+  EXPECT_NE(xml.find("error too large"), std::string::npos);
+  EXPECT_EQ(xml.find("<failure", xml.find("analytic.a")), xml.find("<failure"))
+      << "only the failing case has a <failure>";
+}
+
+TEST(Companions, SeriesCsvIsLongFormatWithQuoting) {
+  Plot p = two_curves();
+  p.series[1].label = "b, \"quoted\"";
+  const std::string csv = series_csv({&p});
+  EXPECT_EQ(csv.rfind("plot_id,series,x,y\n", 0), 0u);
+  EXPECT_NE(csv.find("unit,a's curve,2,4\n"), std::string::npos);
+  EXPECT_NE(csv.find("unit,\"b, \"\"quoted\"\"\",3,4\n"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 8);
+}
+
+TEST(Restitution, ClosedFormApproachesTheDerivedAsymptote) {
+  // e -> (15/8)^{1/8} (v0/v_y)^{-1/4}; the first correction is O((v0/v_y)^{-1/2}) relative,
+  // 1e-3 at 1e6 v_y (the report's table shows 1.001 at 1e4 v_y).
+  Scene s = paper_scene();
+  const double v_y = derive(s).v_yield;
+  for (double ratio : {1e6, 1e8}) {
+    s.velocity = ratio * v_y;
+    const double e =
+        oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
+    EXPECT_NEAR(e / undamped_cor_asymptote(ratio), 1.0, 1e-3) << "v0/v_y = " << ratio;
+  }
+  EXPECT_NEAR(undamped_cor_asymptote(1.0), std::pow(15.0 / 8.0, 0.125), 1e-15);
+}
+
+TEST(PaperFigures, ParametersNameTheDashpotAndDamping) {
+  const std::string html = paper_parameters_html();
+  EXPECT_NE(html.find("c = 11440 N s/m"), std::string::npos);
+  EXPECT_NE(html.find("ζ = 0.09998"), std::string::npos);  // sqrt(m K_y)/(2c), 4 digits
+}
+
+TEST(WriteReport, RejectsAnOutputPathThatIsAFile) {
+  const fs::path file = fs::temp_directory_path() / "ivv-report-not-a-dir";
+  std::ofstream(file) << "x";
+  ReportOptions o;
+  o.out_dir = file;
+  EXPECT_THROW(write_report(o), InputError);
+  o.out_dir.clear();
+  EXPECT_THROW(write_report(o), InputError);
+  fs::remove(file);
+}
+
+TEST(WriteReport, RejectsAFilterMatchingNoCase) {
+  ReportOptions o;
+  o.out_dir = fs::temp_directory_path() / "ivv-report-empty-filter";
+  o.filter = "no.such.case.*";
+  try {
+    write_report(o);
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "--filter");
+  }
+  EXPECT_FALSE(fs::exists(o.out_dir / "index.html"));
+  fs::remove_all(o.out_dir);
+}
+
+}  // namespace
+}  // namespace ivv::reports
