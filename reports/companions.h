@@ -1,9 +1,9 @@
 // The machine-readable companions written beside index.html:
 //
 //   results.json  {"cases": [{"id", "title", "tier", "passed", "measured", "reference",
-//                  "tolerance", "reason", "comparison", "margin", "detail", "seconds"}, ...]}
-//                 the shape of `ivv verify` (its first eight keys), in registry order; a
-//                 number that is NaN or infinite is null.
+//                  "tolerance", "reason", "comparison", "margin", "detail", "slow",
+//                  "seconds"}, ...]}: the shape of `ivv verify`, in registry order; a number
+//                 that is NaN or infinite is null.
 //   series.csv    every plotted series of the report, long format: plot_id,series,x,y
 //                 (RFC 4180 quoting; one row per point, plot ids as in data-plot-id of the
 //                 page's <svg> elements).
