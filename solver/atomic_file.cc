@@ -18,8 +18,14 @@ void write_file_atomically(const std::filesystem::path& path,
     throw InputError(path.string(), "directory '" + dir.string() + "' does not exist");
   }
   std::random_device rd;
-  const fs::path tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(getpid()) +
-                              "-" + std::to_string(rd()));
+  // built with += : GCC 12 warns falsely (-Wrestrict) on a chain of std::string operator+
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  name += "-";
+  name += std::to_string(rd());
+  const fs::path tmp = dir / name;
   try {
     {
       std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
