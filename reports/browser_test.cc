@@ -8,6 +8,8 @@
 // none) that opens every <details>, measures every plot and reports in a <pre> element read
 // back from --dump-dom. A full-page screenshot is taken of the report itself.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>

@@ -65,16 +65,20 @@ std::string data_block(const Series& s, const Plot& p) {
   return any ? out : std::string();
 }
 
-// The plot clause's style for linetype `lt` (its colour).
+// The plot clause's style for linetype `lt` (its colour): markers differ by series too, open
+// ones for point-only series so that coinciding points stay visible.
 std::string style(Series::Style s, int lt) {
+  static constexpr int kFilled[] = {7, 5, 9, 11, 13, 15, 7, 5};
+  static constexpr int kOpen[] = {6, 4, 8, 10, 12, 14, 6, 4};
   const std::string t = " lt " + std::to_string(lt);
   switch (s) {
     case Series::Style::lines:
       return "with lines" + t + " lw 2";
     case Series::Style::points:
-      return "with points" + t + " pt 7 ps 0.6";
+      return "with points" + t + " pt " + std::to_string(kOpen[(lt - 1) % 8]) + " ps 0.8";
     case Series::Style::linespoints:
-      return "with linespoints" + t + " lw 1.5 pt 7 ps 0.5";
+      return "with linespoints" + t + " lw 1.5 pt " + std::to_string(kFilled[(lt - 1) % 8]) +
+             " ps 0.55";
     case Series::Style::dashed:
       return "with lines" + t + " lw 2 dt (8,5)";
   }

@@ -121,6 +121,7 @@ figure { margin: 1rem 0 1.6rem; padding: .6rem; border: 1px solid var(--line);
          border-radius: 6px; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; width: 100%; max-width: 760px; height: auto; margin: 0 auto; }
 figure.wide { max-width: 900px; margin-left: auto; margin-right: auto; }
+details.case figure svg { max-width: 640px; }
 figcaption { font-size: .9rem; color: var(--fg); margin-top: .4rem; }
 figcaption b.ftitle { display: block; }
 .plot-error { border: 2px solid var(--fail); color: var(--fail); padding: .6rem; }
@@ -141,7 +142,13 @@ dl.prov dd { margin: 0; overflow-wrap: anywhere; }
   nav.toc { display: none; }
   h2 { break-before: page; }
   h2.first { break-before: auto; }
-  figure, table, tr { break-inside: avoid; }
+  figure, tr { break-inside: avoid; }
+  figure.wide svg { max-width: 70%; }
+  details.case figure svg { max-width: 55%; }
+  .grid2 { grid-template-columns: 1fr 1fr; gap: 0 .5rem; }
+  figure { margin: .3rem 0 .6rem; padding: .3rem; }
+  figcaption { font-size: 7.5pt; }
+  table.cases { font-size: 7.5pt; }
   details.case > summary { list-style: none; }
   details.case::details-content { content-visibility: visible; display: block; }
   a { color: inherit; text-decoration: none; }

@@ -153,7 +153,7 @@ SpeedSection speed_section(const SectionOptions& options) {
         s.label = std::string(to_string(k)) +
                   (located ? ", events located" : ", events at step ends") + ": order " +
                   number(c.fitted_order, 3);
-        s.style = located ? Series::Style::linespoints : Series::Style::dashed;
+        s.style = located ? Series::Style::linespoints : Series::Style::points;
         s.x = c.steps;
         s.y = c.errors_e;
         p.series.push_back(s);
@@ -168,7 +168,7 @@ SpeedSection speed_section(const SectionOptions& options) {
          "rk4 4, dp45 5). Detected only at step ends, the switch to unloading and the "
          "separation are "
          "found to within one step, and the error stops falling as dt<sup>p</sup>: the "
-         "dashed curves.",
+         "open markers.",
          true});
   }
 
