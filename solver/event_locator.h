@@ -28,11 +28,28 @@ bool is_pre_event(const T& g, Direction d) {
 }
 
 struct LocatorOptions {
-  int samples = 4;  // subintervals probed per step
+  static constexpr int max_samples = 16;
+  int samples = 4;  // subintervals probed per step (1 ... max_samples)
   // Bits of the bracket to resolve; 0 means all but 3 of T's digits.
   int bits = 0;
   std::uintmax_t max_iterations = 200;
 };
+
+// Solves a bracket [a, b] with g(a) strictly before the event and g(b) after it (or zero) by
+// TOMS 748 and returns the post-event end of the final bracket.
+template <class T, class G>
+T solve_crossing(G&& g, const T& a, const T& b, const T& ga, const T& gb, Direction dir,
+                 const LocatorOptions& opt = {}) {
+  if (gb == 0) return b;
+  const int digits = std::numeric_limits<T>::digits;
+  const int bits = opt.bits > 0 ? opt.bits : digits - 3;
+  boost::math::tools::eps_tolerance<T> tol(bits);
+  std::uintmax_t iterations = opt.max_iterations;
+  const auto bracket = boost::math::tools::toms748_solve(g, a, b, ga, gb, tol, iterations);
+  const T lo = bracket.first, hi = bracket.second;
+  if (lo == hi) return hi;
+  return is_pre_event(g(hi), dir) ? lo : hi;
+}
 
 // g: callable T -> T (the event function evaluated on the interpolant).
 // g0: g(t0), already known. Returns the event time in (t0, t1], or nullopt.
@@ -46,19 +63,7 @@ std::optional<T> locate_first_crossing(G&& g, const T& t0, const T& t1, const T&
   for (int i = 1; i <= n; ++i) {
     const T b = (i == n) ? t1 : T(t0 + (t1 - t0) * i / n);
     const T gb = g(b);
-    if (!is_pre_event(gb, dir)) {
-      if (gb == 0) return b;
-      const int digits = std::numeric_limits<T>::digits;
-      const int bits = opt.bits > 0 ? opt.bits : digits - 3;
-      boost::math::tools::eps_tolerance<T> tol(bits);
-      std::uintmax_t iterations = opt.max_iterations;
-      const auto bracket =
-          boost::math::tools::toms748_solve(g, a, b, ga, gb, tol, iterations);
-      // pick the end of the final bracket on the post-event side
-      const T lo = bracket.first, hi = bracket.second;
-      if (lo == hi) return hi;
-      return is_pre_event(g(hi), dir) ? lo : hi;
-    }
+    if (!is_pre_event(gb, dir)) return solve_crossing(g, a, b, ga, gb, dir, opt);
     a = b;
     ga = gb;
   }

@@ -124,9 +124,18 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
   if (observer) (*observer)(0.0, x, sys);
   bool peak_fired = false;
 
+  // `monotone`: the event function cannot return to its pre-event side within a phase, so
+  // the signs at the step's ends decide whether it crossed and no probing is needed:
+  //   max_displacement  w' = -F <= 0 during contact
+  //   max_compression   while z' > 0, z'' = -F - 2 zeta F_z z' < 0 (and z' = w without dashpot)
+  //   separation        rate-independent laws: F falls with z, and z' < 0 on unloading (no
+  //                     reloading during one contact, SPEC §1); not so for Hunt-Crossley
+  // z - z_y (the spring may pass z_y and come back within one step near maximum compression)
+  // and dF/dt are not monotone and are probed.
   struct Active {
     EventKind kind;
     Direction dir;
+    bool monotone;
   };
   auto event_value = [&sys](EventKind k, const state_type& s) -> T {
     switch (k) {
@@ -184,34 +193,68 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     std::array<Active, 4> active{};
     int n_active = 0;
     const bool loading = sys.branch.phase == Phase::loading;
-    if (loading && sys.law.segment_end(sys.branch)) active[n_active++] = {EventKind::yield, Direction::rising};
-    if (loading) active[n_active++] = {EventKind::max_compression, Direction::falling};
+    if (loading && sys.law.segment_end(sys.branch))
+      active[n_active++] = {EventKind::yield, Direction::rising, false};
+    if (loading) active[n_active++] = {EventKind::max_compression, Direction::falling, true};
     if (!run.has_max_displacement)
-      active[n_active++] = {EventKind::max_displacement, Direction::falling};
+      active[n_active++] = {EventKind::max_displacement, Direction::falling, true};
     if (System::rate_dependent && !peak_fired)
-      active[n_active++] = {EventKind::peak_force, Direction::falling};
-    if (!loading) active[n_active++] = {EventKind::separation, Direction::falling};
+      active[n_active++] = {EventKind::peak_force, Direction::falling, false};
+    if (!loading)
+      active[n_active++] = {EventKind::separation, Direction::falling, !System::rate_dependent};
 
-    // earliest crossing among them
+    // Earliest crossing among them. When a non-monotone function is active the step is probed
+    // at `samples` equal subintervals (so that a function returning to its pre-event side
+    // within the step is not missed); each probe state is interpolated once and shared by all
+    // event functions. Only the earliest bracketing subinterval is then solved, for the
+    // functions that cross in it.
+    bool probe = false;
+    for (int i = 0; i < n_active; ++i) probe = probe || !active[i].monotone;
+    const int n = opt.locate_events && probe
+                      ? std::clamp(opt.locator.samples, 1, LocatorOptions::max_samples)
+                      : 1;
+    std::array<T, LocatorOptions::max_samples + 1> tp;
+    std::array<std::array<T, 4>, LocatorOptions::max_samples + 1> gp;
     std::optional<T> t_event;
     int first = -1;
     std::array<std::optional<T>, 4> found{};
     std::array<bool, 4> armed{};
     state_type s;
+    int first_sub = n + 1;
+    std::array<int, 4> sub{};
+    for (int k = 0; k <= n; ++k) {
+      tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
+      const state_type* xk = &s;
+      if (k == 0) xk = &stepper.x0();
+      else if (k == n) xk = &stepper.x1();
+      else stepper.interpolate(sys, tp[k], s);
+      for (int i = 0; i < n_active; ++i) gp[k][i] = event_value(active[i].kind, *xk);
+    }
     for (int i = 0; i < n_active; ++i) {
-      const Active& ev = active[i];
-      const T g0 = event_value(ev.kind, stepper.x0());
-      armed[i] = is_pre_event(g0, ev.dir);
+      armed[i] = is_pre_event(gp[0][i], active[i].dir);
+      sub[i] = n + 1;
+      if (!armed[i]) continue;
+      for (int k = 1; k <= n; ++k)
+        if (!is_pre_event(gp[k][i], active[i].dir)) {
+          sub[i] = k;
+          break;
+        }
+      first_sub = std::min(first_sub, sub[i]);
+    }
+    for (int i = 0; i < n_active; ++i) {
+      if (sub[i] != first_sub || first_sub > n) continue;
+      const int k = sub[i];
       if (opt.locate_events) {
         auto g = [&](T t) {
           stepper.interpolate(sys, t, s);
-          return event_value(ev.kind, s);
+          return event_value(active[i].kind, s);
         };
-        found[i] = locate_first_crossing(g, t0, t1, g0, ev.dir, opt.locator);
-      } else if (is_pre_event(g0, ev.dir) && !is_pre_event(event_value(ev.kind, stepper.x1()), ev.dir)) {
+        found[i] = solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir,
+                                  opt.locator);
+      } else {
         found[i] = t1;  // naive detection at the end of the step
       }
-      if (found[i] && (!t_event || *found[i] < *t_event)) {
+      if (!t_event || *found[i] < *t_event) {
         t_event = found[i];
         first = i;
       }
