@@ -15,6 +15,7 @@
 #include "app/cli_args.h"
 #include "app/result_json.h"
 #include "bench/benchmarks.h"
+#include "reports/report.h"
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
@@ -310,6 +311,29 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
   return failed ? kExitFailure : 0;
 }
 
+int run_report(const reports::ReportOptions& base, bool quiet) {
+  reports::ReportOptions opt = base;
+  if (opt.out_dir.empty()) throw InputError("--out", "required (the report directory)");
+  if (opt.threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  if (!quiet) {
+    opt.progress = [](const std::string& line) { std::cerr << "ivv report: " << line << "\n"; };
+  }
+  const reports::ReportSummary s = reports::write_report(opt);
+  std::cout << "report: " << s.passed << " passed, " << s.failed << " failed ("
+            << s.plots << " plots";
+  if (s.plot_errors) std::cout << ", " << s.plot_errors << " could not be drawn";
+  if (s.section_errors) std::cout << ", " << s.section_errors << " sections failed";
+  std::cout << ") in " << std::setprecision(3) << s.seconds << " s\n"
+            << s.index_html.string() << "\n";
+  const bool bad = s.failed > 0 || s.section_errors > 0 || s.plot_errors > 0;
+  if (bad && !opt.allow_failures) {
+    std::cerr << "ivv report: verification failed (the report was still written); "
+                 "--allow-failures to exit 0\n";
+    return kExitFailure;
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace ivv
 
@@ -376,6 +400,19 @@ int main(int argc, char** argv) {
   verify->add_option("--threads", verify_threads, "worker threads (0 = all cores)");
   verify->add_flag("--list", verify_list, "list the matching cases instead of running them");
 
+  reports::ReportOptions report_opt;
+  bool report_quiet = false;
+  auto* report = app.add_subcommand(
+      "report", "run every verification case and write DIR/index.html (+ JSON, CSV, JUnit)");
+  report->add_option("--out", report_opt.out_dir, "report directory (created if missing)")
+      ->required();
+  report->add_option("--filter", report_opt.filter, "only cases whose id matches this glob");
+  report->add_option("--threads", report_opt.threads, "worker threads (0 = all cores)");
+  report->add_flag("--allow-failures", report_opt.allow_failures,
+                   "exit 0 even when a case fails (the report shows it)");
+  report->add_flag("--quick", report_opt.quick, "fewer sweep and timing points (smoke runs)");
+  report->add_flag("-q,--quiet", report_quiet, "no progress lines on stderr");
+
   auto* bench = app.add_subcommand(
       "bench", "Google Benchmark timings of one impact per integrator (flags: --benchmark_*)");
   bench->allow_extras();
@@ -405,6 +442,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*fit) return run_fit_hc(fit_flags, fit_json);
+    if (*report) {
+      for (int i = 0; i < argc; ++i) report_opt.command_line += (i ? " " : "") + std::string(argv[i]);
+      return run_report(report_opt, report_quiet);
+    }
     if (*verify) return run_verify(verify_filter, verify_out, verify_threads, verify_list);
     if (*bench) {
       std::vector<std::string> extras = bench->remaining();

@@ -15,10 +15,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libmuparser-dev                     # expression contact laws
   gnuplot-nox                         # report plots (SVG terminal)
+  chromium fonts-dejavu-core          # the report's rendering test (headless), with a font
 )
-if [ "${IVV_WITH_BROWSER:-0}" = 1 ]; then
-  packages+=(chromium)                # headless rendering test of the report
-fi
 
 missing=()
 for p in "${packages[@]}"; do
