@@ -8,16 +8,6 @@
 
 namespace ivv::oracles {
 
-namespace {
-void require_positive(const char* field, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    std::ostringstream os;
-    os << "must be positive and finite, got " << value;
-    throw InputError(field, os.str());
-  }
-}
-}  // namespace
-
 double hertz_contact_time_factor() {
   return 0.8 * boost::math::beta(0.4, 0.5);
 }

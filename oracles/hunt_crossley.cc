@@ -13,14 +13,6 @@ namespace ivv::oracles {
 
 namespace {
 
-void require(bool ok, const char* field, const char* range, double value) {
-  if (!ok) {
-    std::ostringstream os;
-    os << "must be " << range << ", got " << value;
-    throw InputError(field, os.str());
-  }
-}
-
 void require_target(double e) {
   require(std::isfinite(e) && e > 0.0 && e < 1.0, "e_target", "in (0, 1)", e);
 }

@@ -15,14 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-void require_positive(const char* field, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    std::ostringstream os;
-    os << "must be positive and finite, got " << value;
-    throw InputError(field, os.str());
-  }
-}
-
 void validate(const LinearModelInput& in) {
   require_positive("mass", in.mass);
   require_positive("K_h", in.K_h);

@@ -7,16 +7,6 @@
 
 namespace ivv::oracles {
 
-namespace {
-void require(bool ok, const char* field, const char* range, double value) {
-  if (!ok) {
-    std::ostringstream os;
-    os << "must be " << range << ", got " << value;
-    throw InputError(field, os.str());
-  }
-}
-}  // namespace
-
 double thornton_cor(double r) {
   require(std::isfinite(r) && r > 0.0, "r", "positive and finite (r = V_y/V_i)", r);
   if (r >= 1.0) return 1.0;

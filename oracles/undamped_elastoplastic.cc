@@ -15,14 +15,6 @@ namespace ivv::oracles {
 
 namespace {
 
-void require_positive(const char* field, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    std::ostringstream os;
-    os << "must be positive and finite, got " << value;
-    throw InputError(field, os.str());
-  }
-}
-
 // Relative tolerance asked of each quadrature: the integrands are smooth after the
 // substitutions, so QAGS reaches a few ulps above round-off.
 constexpr double kQuadratureRelTol = 1e-12;

@@ -25,6 +25,20 @@ struct SectionOptions {
   }
 };
 
+// An empty series to be filled point by point with add().
+inline verification::Series curve(std::string label, verification::Series::Style style =
+                                                         verification::Series::Style::lines) {
+  verification::Series s;
+  s.label = std::move(label);
+  s.style = style;
+  return s;
+}
+
+inline void add(verification::Series& s, double x, double y) {
+  s.x.push_back(x);
+  s.y.push_back(y);
+}
+
 // At most `max_points` of a curve, evenly strided, keeping the first and last point.
 template <class T>
 std::vector<T> thin(const std::vector<T>& v, std::size_t max_points) {

@@ -17,18 +17,6 @@ namespace {
 using verification::Plot;
 using verification::Series;
 
-Series curve(std::string label, Series::Style style = Series::Style::lines) {
-  Series s;
-  s.label = std::move(label);
-  s.style = style;
-  return s;
-}
-
-void add(Series& s, double x, double y) {
-  s.x.push_back(x);
-  s.y.push_back(y);
-}
-
 Scene undamped_paper(double v0) {
   Scene s = paper_scene();
   s.damping = Damping::none();

@@ -4,6 +4,8 @@
 // to exit code 2 with the message on stderr and writes no output file.
 #pragma once
 
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -20,5 +22,18 @@ class InputError : public std::runtime_error {
  private:
   std::string field_;
 };
+
+// Throws InputError(field, "must be <range>, got <value>") unless `ok`.
+inline void require(bool ok, const std::string& field, const std::string& range, double value) {
+  if (ok) return;
+  std::ostringstream os;
+  os << "must be " << range << ", got " << value;
+  throw InputError(field, os.str());
+}
+
+// The most common precondition: a finite number > 0.
+inline void require_positive(const std::string& field, double value) {
+  require(std::isfinite(value) && value > 0.0, field, "positive and finite", value);
+}
 
 }  // namespace ivv

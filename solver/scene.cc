@@ -15,19 +15,11 @@ namespace {
 // Accepted ranges. They are wide on purpose (SPEC §6 asks for masses from 1e-6 to 1e3 kg and
 // velocities from 1e-6 to beyond 100 m/s); they exclude only the physically meaningless.
 void require_positive_finite(const std::string& field, double v, const char* unit) {
-  if (!std::isfinite(v) || v <= 0.0) {
-    std::ostringstream os;
-    os << "must be a finite number > 0 " << unit << " (got " << v << ")";
-    throw InputError(field, os.str());
-  }
+  require(std::isfinite(v) && v > 0.0, field, std::string("a finite number > 0 ") + unit, v);
 }
 
 void require_poisson(const std::string& field, double nu) {
-  if (!std::isfinite(nu) || nu <= -1.0 || nu >= 0.5) {
-    std::ostringstream os;
-    os << "Poisson's ratio must lie in (-1, 0.5) (got " << nu << ")";
-    throw InputError(field, os.str());
-  }
+  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5, field, "a Poisson's ratio in (-1, 0.5)", nu);
 }
 
 }  // namespace
