@@ -41,7 +41,8 @@ std::vector<double> parse_grid(const std::string& text, const std::string& field
     const double lo = parse_number(parts[0], field), hi = parse_number(parts[1], field);
     const double n = parse_number(parts[2], field);
     if (n < 1 || n != std::floor(n) || n > 1e6)
-      throw InputError(field, "point count N must be an integer in [1, 1e6] (got " + parts[2] + ")");
+      throw InputError(field,
+                       "point count N must be an integer in [1, 1e6] (got " + parts[2] + ")");
     if (hi < lo) throw InputError(field, "HI must not be below LO in '" + text + "'");
     if (log && !(lo > 0)) throw InputError(field, "a --log grid needs LO > 0");
     return log ? log_grid(lo, hi, static_cast<int>(n)) : linear_grid(lo, hi, static_cast<int>(n));

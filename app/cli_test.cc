@@ -20,7 +20,8 @@ struct CliRun {
 };
 
 CliRun ivv(const std::string& args) {
-  const fs::path err_file = fs::temp_directory_path() / ("ivv_cli_test_" + std::to_string(getpid()));
+  const fs::path err_file =
+      fs::temp_directory_path() / ("ivv_cli_test_" + std::to_string(getpid()));
   const std::string cmd = std::string(IVV_BINARY) + " " + args + " 2>" + err_file.string();
   FILE* pipe = popen(cmd.c_str(), "r");
   std::string out;
@@ -89,7 +90,8 @@ TEST(Cli, TrajectoryCsvIsWritten) {
 
 TEST(Cli, SweepWritesTheGrid) {
   const fs::path csv = scratch("grid.csv");
-  const CliRun r = ivv("sweep --scene paper --v0 0.5:5:4 --log --zeta 0,0.1,0.3 --out " + csv.string());
+  const CliRun r =
+      ivv("sweep --scene paper --v0 0.5:5:4 --log --zeta 0,0.1,0.3 --out " + csv.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::ifstream in(csv);
   int rows = 0;
@@ -180,8 +182,8 @@ TEST(Cli, VerifyWritesResultsAndReportsFailureByExitCode) {
   std::ifstream in(json);
   const auto j = nlohmann::json::parse(in);
   ASSERT_EQ(j["cases"].size(), 1u);
-  for (const char* key : {"id", "title", "tier", "passed", "measured", "reference", "tolerance",
-                          "reason"})
+  for (const char* key :
+       {"id", "title", "tier", "passed", "measured", "reference", "tolerance", "reason"})
     EXPECT_TRUE(j["cases"][0].contains(key)) << key;
   EXPECT_EQ(ivv("verify --filter 'no.such.case*' --out " + json.string()).exit_code, 2);
 }

@@ -3,8 +3,8 @@
 //
 // Exit codes: 0 success; 1 a computation failed (integrator could not meet its tolerance,
 // a verification case failed); 2 bad input (message names the field and accepted range).
-#include <CLI/CLI.hpp>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -45,8 +45,7 @@ struct ModelFlags {
 };
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping) {
-  cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)")
-      ->required();
+  cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)")->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
     auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
@@ -61,9 +60,12 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
       ->capture_default_str();
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
-  cmd.add_option("--dt", f.dt, "fixed step of rk4 in normalised time tau = omega0 t (default 1e-3)");
-  cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")->capture_default_str();
-  cmd.add_option("--hc-k", f.hc_k, "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
+  cmd.add_option("--dt", f.dt,
+                 "fixed step of rk4 in normalised time tau = omega0 t (default 1e-3)");
+  cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")
+      ->capture_default_str();
+  cmd.add_option("--hc-k", f.hc_k,
+                 "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
   cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m]")->capture_default_str();
 }
 
@@ -71,7 +73,8 @@ SimulationRequest build_request(const ModelFlags& f) {
   SimulationRequest req;
   req.scene = load_scene(f.scene);
   if (f.v0) {
-    if (!(std::isfinite(*f.v0) && *f.v0 > 0)) throw InputError("--v0", "must be a finite number > 0 m/s");
+    if (!(std::isfinite(*f.v0) && *f.v0 > 0))
+      throw InputError("--v0", "must be a finite number > 0 m/s");
     req.scene.velocity = *f.v0;
   }
   if (f.zeta) {
@@ -132,8 +135,8 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
       << " + plastic " << r.energy.plastic << " + viscous " << r.energy.viscous;
   if (r.energy.stored > 0) out << " + stored " << r.energy.stored;
   out << " + residual " << r.energy.residual << "\n";
-  out << "  impulse      " << r.impulse << " N s (m v0 (1 + e) = "
-      << req.scene.mass * req.scene.velocity * (1 + r.e) << ")\n";
+  out << "  impulse      " << r.impulse
+      << " N s (m v0 (1 + e) = " << req.scene.mass * req.scene.velocity * (1 + r.e) << ")\n";
   out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
 }
 
@@ -213,10 +216,11 @@ int run_scene_show(const std::string& scene_name, bool json) {
     return 0;
   }
   std::cout << std::setprecision(6) << "scene " << s.name << "\n"
-            << "  impactor  m = " << s.mass << " kg, R = " << s.radius << " m, E1 = "
-            << s.impactor_youngs_modulus << " Pa, nu1 = " << s.impactor_poisson_ratio << "\n"
-            << "  target    E2 = " << s.target_youngs_modulus << " Pa, nu2 = "
-            << s.target_poisson_ratio << ", S_y = " << s.yield_strength << " Pa\n"
+            << "  impactor  m = " << s.mass << " kg, R = " << s.radius
+            << " m, E1 = " << s.impactor_youngs_modulus << " Pa, nu1 = " << s.impactor_poisson_ratio
+            << "\n"
+            << "  target    E2 = " << s.target_youngs_modulus
+            << " Pa, nu2 = " << s.target_poisson_ratio << ", S_y = " << s.yield_strength << " Pa\n"
             << "  impact    v0 = " << s.velocity << " m/s\n"
             << "derived\n"
             << "  E*     = " << p.E_star << " Pa\n"
@@ -273,16 +277,16 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
   if (out_path.empty()) throw InputError("--out", "required (the results JSON file)");
   if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
   const bool tty = isatty(fileno(stderr));
-  const auto records = run_cases(cases, threads, [tty](std::size_t done, std::size_t total,
-                                                       const Case& c) {
-    if (tty) {
-      std::fprintf(stderr, "\r[%zu/%zu] %-70.70s", done, total, c.id.c_str());
-      if (done == total) std::fprintf(stderr, "\n");
-    } else if (done == total || done % std::max<std::size_t>(1, total / 10) == 0) {
-      std::fprintf(stderr, "verify: %zu/%zu cases run\n", done, total);
-    }
-    std::fflush(stderr);
-  });
+  const auto records =
+      run_cases(cases, threads, [tty](std::size_t done, std::size_t total, const Case& c) {
+        if (tty) {
+          std::fprintf(stderr, "\r[%zu/%zu] %-70.70s", done, total, c.id.c_str());
+          if (done == total) std::fprintf(stderr, "\n");
+        } else if (done == total || done % std::max<std::size_t>(1, total / 10) == 0) {
+          std::fprintf(stderr, "verify: %zu/%zu cases run\n", done, total);
+        }
+        std::fflush(stderr);
+      });
   nlohmann::json out = {{"cases", nlohmann::json::array()}};
   std::size_t failed = 0;
   for (const CaseRecord& r : records) {
@@ -319,8 +323,8 @@ int run_report(const reports::ReportOptions& base, bool quiet) {
     opt.progress = [](const std::string& line) { std::cerr << "ivv report: " << line << "\n"; };
   }
   const reports::ReportSummary s = reports::write_report(opt);
-  std::cout << "report: " << s.passed << " passed, " << s.failed << " failed ("
-            << s.plots << " plots";
+  std::cout << "report: " << s.passed << " passed, " << s.failed << " failed (" << s.plots
+            << " plots";
   if (s.plot_errors) std::cout << ", " << s.plot_errors << " could not be drawn";
   if (s.section_errors) std::cout << ", " << s.section_errors << " sections failed";
   std::cout << ") in " << std::setprecision(3) << s.seconds << " s\n"
@@ -352,7 +356,8 @@ int main(int argc, char** argv) {
   ModelFlags sim_flags;
   bool json = false;
   std::string trajectory;
-  auto* sim = app.add_subcommand("simulate", "run one impact and print COR, peak force, contact time");
+  auto* sim =
+      app.add_subcommand("simulate", "run one impact and print COR, peak force, contact time");
   add_model_flags(*sim, sim_flags, true);
   sim->add_flag("--json", json, "print one JSON object on stdout instead of the summary");
   sim->add_option("--trajectory", trajectory,
@@ -443,7 +448,8 @@ int main(int argc, char** argv) {
     }
     if (*fit) return run_fit_hc(fit_flags, fit_json);
     if (*report) {
-      for (int i = 0; i < argc; ++i) report_opt.command_line += (i ? " " : "") + std::string(argv[i]);
+      for (int i = 0; i < argc; ++i)
+        report_opt.command_line += (i ? " " : "") + std::string(argv[i]);
       return run_report(report_opt, report_quiet);
     }
     if (*verify) return run_verify(verify_filter, verify_out, verify_threads, verify_list);

@@ -5,7 +5,9 @@
 namespace ivv {
 namespace {
 // JSON has no infinity: an absent dashpot is null.
-nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nullptr;
+}
 }  // namespace
 
 nlohmann::json scene_json(const Scene& s, const DerivedParameters& p) {
@@ -33,7 +35,10 @@ nlohmann::json scene_json(const Scene& s, const DerivedParameters& p) {
 nlohmann::json result_json(const ImpactResult& r) {
   nlohmann::json events = nlohmann::json::array();
   for (const auto& ev : r.events) {
-    events.push_back({{"kind", to_string(ev.kind)}, {"t", ev.t}, {"z", ev.z}, {"alpha", ev.alpha},
+    events.push_back({{"kind", to_string(ev.kind)},
+                      {"t", ev.t},
+                      {"z", ev.z},
+                      {"alpha", ev.alpha},
                       {"force", ev.force}});
   }
   nlohmann::json j = {

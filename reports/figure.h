@@ -26,8 +26,8 @@ struct SectionOptions {
 };
 
 // An empty series to be filled point by point with add().
-inline verification::Series curve(std::string label, verification::Series::Style style =
-                                                         verification::Series::Style::lines) {
+inline verification::Series curve(
+    std::string label, verification::Series::Style style = verification::Series::Style::lines) {
   verification::Series s;
   s.label = std::move(label);
   s.style = style;

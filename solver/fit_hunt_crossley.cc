@@ -44,7 +44,9 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
     lo = hi;
     f_lo = f_hi;
     hi *= 4;
-    if (hi > 1e6) throw std::runtime_error("cannot bracket the Hunt-Crossley mu for e = " + std::to_string(fit.e));
+    if (hi > 1e6)
+      throw std::runtime_error("cannot bracket the Hunt-Crossley mu for e = " +
+                               std::to_string(fit.e));
     f_hi = run(hi).e - fit.e;
   }
   // the COR of the runs is accurate to ~1e-10 (rtol); stop the bracket near that

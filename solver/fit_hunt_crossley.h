@@ -15,15 +15,15 @@
 namespace ivv {
 
 struct HuntCrossleyFit {
-  double K = 0.0;   // [N/m^1.5]
-  double mu = 0.0;  // [s/m]
-  double e = 0.0;   // the model's COR (the target)
-  double F_max = 0.0;  // the model's peak force (the target) [N]
+  double K = 0.0;                // [N/m^1.5]
+  double mu = 0.0;               // [s/m]
+  double e = 0.0;                // the model's COR (the target)
+  double F_max = 0.0;            // the model's peak force (the target) [N]
   double t_contact_model = 0.0;  // [s]
   double t_contact_hc = 0.0;     // [s]
-  ImpactResult model;  // the model run
-  ImpactResult hc;     // the final Hunt-Crossley run
-  int evaluations = 0;  // Hunt-Crossley runs used
+  ImpactResult model;            // the model run
+  ImpactResult hc;               // the final Hunt-Crossley run
+  int evaluations = 0;           // Hunt-Crossley runs used
 };
 
 // `model` describes the impact to match (its law must not be hunt-crossley). Throws

@@ -37,8 +37,8 @@ namespace ivv {
 
 // A trajectory sample in normalised variables (tau, state); observers get these.
 template <class System>
-using SampleObserver = std::function<void(double tau, const typename System::state_type& x,
-                                          const System& sys)>;
+using SampleObserver =
+    std::function<void(double tau, const typename System::state_type& x, const System& sys)>;
 
 template <class System>
 struct NormalisedRun {
@@ -225,9 +225,12 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     for (int k = 0; k <= n; ++k) {
       tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
       const state_type* xk = &s;
-      if (k == 0) xk = &stepper.x0();
-      else if (k == n) xk = &stepper.x1();
-      else stepper.interpolate(sys, tp[k], s);
+      if (k == 0)
+        xk = &stepper.x0();
+      else if (k == n)
+        xk = &stepper.x1();
+      else
+        stepper.interpolate(sys, tp[k], s);
       for (int i = 0; i < n_active; ++i) gp[k][i] = event_value(active[i].kind, *xk);
     }
     for (int i = 0; i < n_active; ++i) {
@@ -249,8 +252,8 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
           stepper.interpolate(sys, t, s);
           return event_value(active[i].kind, s);
         };
-        found[i] = solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir,
-                                  opt.locator);
+        found[i] =
+            solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir, opt.locator);
       } else {
         found[i] = t1;  // naive detection at the end of the step
       }

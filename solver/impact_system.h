@@ -48,10 +48,10 @@ struct ImpactSystem {
 
   Law law;
   Branch<T> branch;
-  double length = 1.0;    // v0/omega0 [m]
-  double velocity = 1.0;  // v0 [m/s]
+  double length = 1.0;       // v0/omega0 [m]
+  double velocity = 1.0;     // v0 [m/s]
   double force_scale = 1.0;  // m v0 omega0 [N]
-  double two_zeta = 0.0;  // 2 zeta (Dashpot only)
+  double two_zeta = 0.0;     // 2 zeta (Dashpot only)
   mutable long rhs_evaluations = 0;
 
   static state_type initial_state() {

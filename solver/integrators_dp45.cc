@@ -1,6 +1,6 @@
 // Instantiates simulate() for Dp45Stepper (one translation unit per integrator).
-#include "solver/steppers/dp45.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/dp45.h"
 
 namespace ivv::detail {
 

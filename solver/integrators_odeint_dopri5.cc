@@ -1,11 +1,11 @@
 // Instantiates simulate() for OdeintDopri5Stepper (one translation unit per integrator).
-#include "solver/steppers/odeint_dopri5.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/odeint_dopri5.h"
 
 namespace ivv::detail {
 
 ImpactResult simulate_odeint_dopri5(const SimulationRequest& req, const DerivedParameters& p,
-                           std::vector<TrajectoryPoint>* trajectory) {
+                                    std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<OdeintDopri5Stepper>(req, p, trajectory);
 }
 

@@ -1,11 +1,11 @@
 // Instantiates simulate() for OdeintRosenbrock4Stepper (one translation unit per integrator).
-#include "solver/steppers/odeint_rosenbrock4.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/odeint_rosenbrock4.h"
 
 namespace ivv::detail {
 
 ImpactResult simulate_odeint_rosenbrock4(const SimulationRequest& req, const DerivedParameters& p,
-                           std::vector<TrajectoryPoint>* trajectory) {
+                                         std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<OdeintRosenbrock4Stepper>(req, p, trajectory);
 }
 

@@ -65,8 +65,8 @@ TEST_P(EveryIntegrator, EventsComeInPhysicalOrderWithDamping) {
   std::vector<EventKind> kinds;
   for (const auto& ev : r.events) kinds.push_back(ev.kind);
   const std::vector<EventKind> expected = {EventKind::onset, EventKind::yield,
-                                           EventKind::max_compression,
-                                           EventKind::max_displacement, EventKind::separation};
+                                           EventKind::max_compression, EventKind::max_displacement,
+                                           EventKind::separation};
   EXPECT_EQ(kinds, expected);
   EXPECT_LT(r.t_z_max, r.t_alpha_max);  // paper: alpha_c after z_m when damped
   EXPECT_LT(r.z_max, r.alpha_max);

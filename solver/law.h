@@ -53,8 +53,8 @@ class LawDomainError : public std::runtime_error {
 //   hysteresis_work(b)       [J]              closed-form loop area for a completed unloading
 //                                             branch, or nullopt if the law has none
 template <class L>
-concept ContactLaw = requires(const L& law, Branch<double>& b, const Branch<double>& cb,
-                              double z, double v) {
+concept ContactLaw = requires(const L& law, Branch<double>& b, const Branch<double>& cb, double z,
+                              double v) {
   { L::name } -> std::convertible_to<std::string_view>;
   { L::rate_dependent } -> std::convertible_to<bool>;
   { law.force(cb, z, v) } -> std::convertible_to<double>;

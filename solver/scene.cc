@@ -1,11 +1,11 @@
 #include "solver/scene.h"
 
+#include <toml++/toml.h>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "solver/input_error.h"
 
@@ -47,17 +47,16 @@ void validate(const Scene& s) {
 
 DerivedParameters derive(const Scene& s) {
   DerivedParameters p;
-  const double compliance = (1.0 - s.impactor_poisson_ratio * s.impactor_poisson_ratio) /
-                                s.impactor_youngs_modulus +
-                            (1.0 - s.target_poisson_ratio * s.target_poisson_ratio) /
-                                s.target_youngs_modulus;
-  p.E_star = 1.0 / compliance;                                           // eq. 7
-  p.K_h = 4.0 / 3.0 * std::sqrt(s.radius) * p.E_star;                    // eq. 6
+  const double compliance =
+      (1.0 - s.impactor_poisson_ratio * s.impactor_poisson_ratio) / s.impactor_youngs_modulus +
+      (1.0 - s.target_poisson_ratio * s.target_poisson_ratio) / s.target_youngs_modulus;
+  p.E_star = 1.0 / compliance;                         // eq. 7
+  p.K_h = 4.0 / 3.0 * std::sqrt(s.radius) * p.E_star;  // eq. 6
   const double pi2 = std::numbers::pi * std::numbers::pi;
   p.z_y = 0.68 * s.yield_strength * s.yield_strength * pi2 * s.radius /  // eq. 11
           (p.E_star * p.E_star);
-  p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);  // eq. 12
-  p.omega0 = std::sqrt(p.K_y / s.mass);     // eq. 23
+  p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);             // eq. 12
+  p.omega0 = std::sqrt(p.K_y / s.mass);               // eq. 23
   const double critical = std::sqrt(s.mass * p.K_y);  // 2 c zeta
   switch (s.damping.kind) {
     case Damping::Kind::none:

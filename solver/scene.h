@@ -36,8 +36,8 @@ struct Damping {
 struct Scene {
   std::string name = "custom";
   // impactor
-  double mass = 0.0;                    // m [kg]
-  double radius = 0.0;                  // R [m]
+  double mass = 0.0;                     // m [kg]
+  double radius = 0.0;                   // R [m]
   double impactor_youngs_modulus = 0.0;  // E1 [Pa]
   double impactor_poisson_ratio = 0.0;   // nu1 [-]
   // target
@@ -50,24 +50,24 @@ struct Scene {
 };
 
 struct DerivedParameters {
-  double E_star = 0.0;   // effective modulus E* [Pa]
-  double K_h = 0.0;      // Hertz stiffness [N/m^1.5]
-  double z_y = 0.0;      // yield deformation [m]
-  double K_y = 0.0;      // elastic-plastic loading stiffness [N/m]
-  double omega0 = 0.0;   // sqrt(K_y/m) [rad/s]
-  double zeta = 0.0;     // damping ratio [-]; 0 without a dashpot
+  double E_star = 0.0;                                 // effective modulus E* [Pa]
+  double K_h = 0.0;                                    // Hertz stiffness [N/m^1.5]
+  double z_y = 0.0;                                    // yield deformation [m]
+  double K_y = 0.0;                                    // elastic-plastic loading stiffness [N/m]
+  double omega0 = 0.0;                                 // sqrt(K_y/m) [rad/s]
+  double zeta = 0.0;                                   // damping ratio [-]; 0 without a dashpot
   double c = std::numeric_limits<double>::infinity();  // dashpot [N s/m]; inf without one
-  double v_yield = 0.0;  // undamped yield velocity [m/s]
+  double v_yield = 0.0;                                // undamped yield velocity [m/s]
   bool has_dashpot() const { return c < std::numeric_limits<double>::infinity(); }
 };
 
 // Scales of paper eq. 26 for one impact velocity.
 struct Scales {
-  double time = 0.0;    // 1/omega0 [s]
-  double length = 0.0;  // v0/omega0 [m]
+  double time = 0.0;      // 1/omega0 [s]
+  double length = 0.0;    // v0/omega0 [m]
   double velocity = 0.0;  // v0 [m/s]
-  double force = 0.0;   // m v0 omega0 [N]
-  double energy = 0.0;  // m v0^2 [J]
+  double force = 0.0;     // m v0 omega0 [N]
+  double energy = 0.0;    // m v0^2 [J]
 };
 
 // Throws InputError naming the first invalid field and its accepted range.

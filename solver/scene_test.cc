@@ -17,8 +17,8 @@ TEST(DerivedParameters, PaperSceneMatchesHandArithmetic) {
   const double E_star = 1.0 / (0.91 / 207e9 + 0.91 / 7.9e9);
   EXPECT_NEAR(p.E_star / E_star, 1.0, 1e-15);
   EXPECT_NEAR(p.K_h / (4.0 / 3.0 * 0.1 * E_star), 1.0, 1e-15);
-  const double z_y = 0.68 * 202e6 * 202e6 * std::numbers::pi * std::numbers::pi * 0.01 /
-                     (E_star * E_star);
+  const double z_y =
+      0.68 * 202e6 * 202e6 * std::numbers::pi * std::numbers::pi * 0.01 / (E_star * E_star);
   EXPECT_NEAR(p.z_y / z_y, 1.0, 1e-14);
   EXPECT_NEAR(p.K_y / (1.5 * p.K_h * std::sqrt(z_y)), 1.0, 1e-14);
   EXPECT_FALSE(p.has_dashpot());
@@ -111,11 +111,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "impactor.mass"},
         BadScene{"nan_radius", replace(kGoodScene, "radius = 0.010", "radius = nan"),
                  "impactor.radius"},
-        BadScene{"poisson_half", replace(kGoodScene, "poisson_ratio = 0.3\n[target]",
-                                         "poisson_ratio = 0.5\n[target]"),
-                 "impactor.poisson_ratio"},
-        BadScene{"missing_velocity", replace(kGoodScene, "velocity = 1", ""),
-                 "impact.velocity"},
+        BadScene{
+            "poisson_half",
+            replace(kGoodScene, "poisson_ratio = 0.3\n[target]", "poisson_ratio = 0.5\n[target]"),
+            "impactor.poisson_ratio"},
+        BadScene{"missing_velocity", replace(kGoodScene, "velocity = 1", ""), "impact.velocity"},
         BadScene{"unknown_key", replace(kGoodScene, "mass = 0.5", "mas = 0.5"), "impactor.mas"},
         BadScene{"both_strengths",
                  replace(kGoodScene, "shear_strength = 101e6",
@@ -131,7 +131,9 @@ TEST(SceneParser, MissingFileIsInputError) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
 }
 
-TEST(SceneParser, PaperIsBuiltIn) { EXPECT_EQ(load_scene("paper").name, "paper"); }
+TEST(SceneParser, PaperIsBuiltIn) {
+  EXPECT_EQ(load_scene("paper").name, "paper");
+}
 
 }  // namespace
 }  // namespace ivv

@@ -12,10 +12,10 @@ namespace {
 
 constexpr std::array kLaws = {LawKind::hertz, LawKind::elastoplastic, LawKind::linearized,
                               LawKind::hunt_crossley};
-constexpr std::array kIntegrators = {IntegratorKind::odeint_dopri5,
-                                     IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
-                                     IntegratorKind::dp45, IntegratorKind::gsl_rk8pd,
-                                     IntegratorKind::gsl_msbdf, IntegratorKind::mp50};
+constexpr std::array kIntegrators = {
+    IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
+    IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf,
+    IntegratorKind::mp50};
 
 template <class Kind, std::size_t N>
 std::string name_list(const std::array<Kind, N>& kinds) {
@@ -26,8 +26,12 @@ std::string name_list(const std::array<Kind, N>& kinds) {
 
 }  // namespace
 
-std::span<const LawKind> all_laws() { return kLaws; }
-std::span<const IntegratorKind> all_integrators() { return kIntegrators; }
+std::span<const LawKind> all_laws() {
+  return kLaws;
+}
+std::span<const IntegratorKind> all_integrators() {
+  return kIntegrators;
+}
 
 std::string_view to_string(LawKind k) {
   switch (k) {
@@ -130,11 +134,14 @@ IntegratorKind parse_integrator(const std::string& name, const std::string& fiel
 
 std::string IntegratorOptions::invalid_reason() const {
   std::ostringstream os;
-  if (!(rtol >= 1e-15 && rtol <= 1e-2)) os << "--rtol must lie in [1e-15, 1e-2] (got " << rtol << ")";
-  else if (!(atol > 0 && atol <= 1e-2)) os << "--atol must lie in (0, 1e-2] (got " << atol << ")";
+  if (!(rtol >= 1e-15 && rtol <= 1e-2))
+    os << "--rtol must lie in [1e-15, 1e-2] (got " << rtol << ")";
+  else if (!(atol > 0 && atol <= 1e-2))
+    os << "--atol must lie in (0, 1e-2] (got " << atol << ")";
   else if (!(dt >= 0 && dt <= 0.5 && std::isfinite(dt)))
     os << "--dt (normalised step) must lie in (0, 0.5] (got " << dt << ")";
-  else if (!(max_steps > 0)) os << "max_steps must be > 0 (got " << max_steps << ")";
+  else if (!(max_steps > 0))
+    os << "max_steps must be > 0 (got " << max_steps << ")";
   return os.str();
 }
 

@@ -36,8 +36,7 @@ std::string_view to_string(IntegratorKind k);
 std::string_view describe(IntegratorKind k);
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
 LawKind parse_law(const std::string& name, const std::string& field = "--law");
-IntegratorKind parse_integrator(const std::string& name,
-                                const std::string& field = "--integrator");
+IntegratorKind parse_integrator(const std::string& name, const std::string& field = "--integrator");
 
 // Hunt-Crossley parameters (used only by LawKind::hunt_crossley).
 struct HuntCrossleyParameters {

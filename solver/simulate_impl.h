@@ -29,8 +29,8 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.steps = run.steps;
   r.rhs_evaluations = sys.rhs_evaluations;
   for (const auto& ev : run.events) {
-    r.events.push_back({ev.kind, d(ev.tau) * Ts, d(sys.z(ev.x)) * L, d(ev.x[System::A]) * L,
-                        d(ev.force) * Fs});
+    r.events.push_back(
+        {ev.kind, d(ev.tau) * Ts, d(sys.z(ev.x)) * L, d(ev.x[System::A]) * L, d(ev.force) * Fs});
   }
   const auto& x = run.x_end;
   r.t_contact = d(run.tau_end) * Ts;
@@ -89,8 +89,7 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
   sys.two_zeta = Dashpot ? 2.0 * p.zeta : 0.0;
   SampleObserver<System> observer;
   if (trajectory) {
-    observer = [trajectory, k](double tau, const typename System::state_type& x,
-                               const System& s) {
+    observer = [trajectory, k](double tau, const typename System::state_type& x, const System& s) {
       auto d = [](const auto& v) { return static_cast<double>(v); };
       const double F = d(s.force(x));
       TrajectoryPoint pt;
@@ -106,8 +105,7 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
       trajectory->push_back(pt);
     };
   }
-  const auto run =
-      run_impact<Stepper<System>>(sys, req.options, trajectory ? &observer : nullptr);
+  const auto run = run_impact<Stepper<System>>(sys, req.options, trajectory ? &observer : nullptr);
   return to_physical(run, sys, req.scene, p);
 }
 
@@ -132,8 +130,7 @@ ImpactResult simulate_with(const SimulationRequest& req, const DerivedParameters
     case LawKind::linearized:
       return dispatch(LinearizedLaw{p.K_h, p.K_y});
     case LawKind::hunt_crossley:
-      return dispatch(
-          HuntCrossleyLaw{req.hunt_crossley.K.value_or(p.K_h), req.hunt_crossley.mu});
+      return dispatch(HuntCrossleyLaw{req.hunt_crossley.K.value_or(p.K_h), req.hunt_crossley.mu});
   }
   return {};
 }

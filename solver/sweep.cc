@@ -27,9 +27,11 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   if (req.velocities.empty()) throw InputError("--v0", "the velocity grid is empty");
   if (req.zetas.empty()) throw InputError("--zeta", "the damping grid is empty");
   for (double v : req.velocities)
-    if (!(std::isfinite(v) && v > 0)) throw InputError("--v0", "velocities must be finite and > 0 m/s");
+    if (!(std::isfinite(v) && v > 0))
+      throw InputError("--v0", "velocities must be finite and > 0 m/s");
   for (double z : req.zetas)
-    if (!(std::isfinite(z) && z >= 0)) throw InputError("--zeta", "damping ratios must be finite and >= 0 (0: no dashpot)");
+    if (!(std::isfinite(z) && z >= 0))
+      throw InputError("--zeta", "damping ratios must be finite and >= 0 (0: no dashpot)");
 
   std::vector<SweepPoint> points;
   for (double v : req.velocities)
@@ -48,8 +50,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
     for (std::size_t i = next++; i < points.size(); i = next++) {
       SimulationRequest r = req.base;
       r.scene.velocity = points[i].v0;
-      r.scene.damping =
-          points[i].zeta > 0 ? Damping::ratio(points[i].zeta) : Damping::none();
+      r.scene.damping = points[i].zeta > 0 ? Damping::ratio(points[i].zeta) : Damping::none();
       points[i].result = simulate(r);
       if (req.progress) {
         std::lock_guard lock(progress_mutex);
@@ -57,7 +58,8 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
       }
     }
   };
-  int threads = req.threads > 0 ? req.threads : static_cast<int>(std::thread::hardware_concurrency());
+  int threads =
+      req.threads > 0 ? req.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min<int>(threads, static_cast<int>(points.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);

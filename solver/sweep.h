@@ -10,7 +10,7 @@
 namespace ivv {
 
 struct SweepRequest {
-  SimulationRequest base;        // scene, law, integrator and options shared by every point
+  SimulationRequest base;          // scene, law, integrator and options shared by every point
   std::vector<double> velocities;  // v0 [m/s]
   std::vector<double> zetas;       // damping ratios; 0 means no dashpot
   int threads = 0;                 // 0: all hardware threads

@@ -10,7 +10,9 @@
 namespace ivv::verification {
 namespace {
 
-std::string name(IntegratorKind k) { return std::string(to_string(k)); }
+std::string name(IntegratorKind k) {
+  return std::string(to_string(k));
+}
 
 // Hertz, no dashpot: z_m = (5 m v0^2/(4 K_h))^{2/5}, F_max = K_h z_m^{3/2},
 // t_f = (4/5) B(2/5, 1/2) z_m / v0, e = 1.

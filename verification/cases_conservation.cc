@@ -34,7 +34,8 @@ Outcome conservation(IntegratorKind k, Check check, double tolerance) {
   int count = 0;
   for (const auto& [label, req] : runs(k)) {
     const ImpactResult r = simulate(req);
-    if (!r.separated()) return at_most(INFINITY, tolerance, label + " did not separate: " + r.reason);
+    if (!r.separated())
+      return at_most(INFINITY, tolerance, label + " did not separate: " + r.reason);
     double err = 0.0;
     switch (check) {
       case Check::ledger:
@@ -81,9 +82,8 @@ void register_conservation_cases(Registry& reg) {
                  "round-off, so this mainly checks event bookkeeping",
              slow, [k, tol] { return conservation(k, Check::impulse, tol.value); }});
     reg.add({"conservation.cor-definitions." + n,
-             "Newton, Poisson and energetic COR agree (" + n + ")", Tier::conservation,
-             tol.reason, slow,
-             [k, tol] { return conservation(k, Check::cor_definitions, tol.value); }});
+             "Newton, Poisson and energetic COR agree (" + n + ")", Tier::conservation, tol.reason,
+             slow, [k, tol] { return conservation(k, Check::cor_definitions, tol.value); }});
   }
 }
 

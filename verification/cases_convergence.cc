@@ -31,10 +31,10 @@ Plot convergence_plot(const std::string& id, const bench::ConvergenceStudy& loca
   p.x_label = "normalised step h = omega0 dt";
   p.y_label = "relative error of e";
   p.log_x = p.log_y = true;
-  p.series.push_back({"events located (order " + fmt(located.fitted_order, 3) + ")",
-                      located.steps, located.errors_e, Series::Style::linespoints});
-  p.series.push_back({"events at step ends (order " + fmt(naive.fitted_order, 3) + ")",
-                      naive.steps, naive.errors_e, Series::Style::linespoints});
+  p.series.push_back({"events located (order " + fmt(located.fitted_order, 3) + ")", located.steps,
+                      located.errors_e, Series::Style::linespoints});
+  p.series.push_back({"events at step ends (order " + fmt(naive.fitted_order, 3) + ")", naive.steps,
+                      naive.errors_e, Series::Style::linespoints});
   return p;
 }
 
@@ -47,17 +47,17 @@ Outcome order_case(IntegratorKind k, bool locate, double expected) {
   std::string errors;
   for (double e : study.errors_e) errors += (errors.empty() ? "" : ", ") + fmt(e, 3);
   Outcome o;
-  const std::string detail = "least-squares slope of log(error in e) on log(h) over h = " +
-                             fmt(steps.front()) + " ... " + fmt(steps.back()) +
-                             "; errors " + errors;
+  const std::string detail =
+      "least-squares slope of log(error in e) on log(h) over h = " + fmt(steps.front()) + " ... " +
+      fmt(steps.back()) + "; errors " + errors;
   if (locate) {
     o = absolute(study.fitted_order, expected, 0.3, detail);
   } else {
     o = at_most(study.fitted_order, 2.5, detail);
     o.reference = 2.0;
   }
-  o.plots.push_back(convergence_plot(std::string("convergence-") + std::string(to_string(k)),
-                                     located, naive));
+  o.plots.push_back(
+      convergence_plot(std::string("convergence-") + std::string(to_string(k)), located, naive));
   return o;
 }
 
@@ -71,9 +71,8 @@ void register_convergence_cases(Registry& reg) {
            false, [] { return order_case(IntegratorKind::rk4, true, 4.0); }});
   reg.add({"convergence.dp45.events-located",
            "dp45 (fixed step, no error control) converges with order 5 on the COR",
-           Tier::convergence,
-           "the Dormand-Prince fifth-order solution propagates; 0.3 as for rk4", false,
-           [] { return order_case(IntegratorKind::dp45, true, 5.0); }});
+           Tier::convergence, "the Dormand-Prince fifth-order solution propagates; 0.3 as for rk4",
+           false, [] { return order_case(IntegratorKind::dp45, true, 5.0); }});
   reg.add({"convergence.rk4.events-at-step-ends",
            "rk4 with events noticed only at step ends collapses to order ~2", Tier::convergence,
            "switching at the first step end past dz/dt = 0 takes z_m short by up to |z''| h^2/2, "

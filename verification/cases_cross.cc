@@ -18,8 +18,8 @@ LawGrid grid_for(LawKind law) {
   if (law == LawKind::hunt_crossley) {
     for (double v0 : {0.1, 1.0, 5.0})
       for (double u0 : {0.2, 1.0, 5.0}) {
-        g.requests.push_back(request(with(paper_scene(), v0, 0.0), law,
-                                     IntegratorKind::odeint_dopri5, u0 / v0));
+        g.requests.push_back(
+            request(with(paper_scene(), v0, 0.0), law, IntegratorKind::odeint_dopri5, u0 / v0));
         g.labels.push_back("paper v0=" + fmt(v0) + " mu v0=" + fmt(u0));
       }
     return g;

@@ -12,7 +12,9 @@
 namespace ivv::verification {
 namespace {
 
-std::string name(IntegratorKind k) { return std::string(to_string(k)); }
+std::string name(IntegratorKind k) {
+  return std::string(to_string(k));
+}
 bool implicit(IntegratorKind k) {
   return k == IntegratorKind::odeint_rosenbrock4 || k == IntegratorKind::gsl_msbdf;
 }
@@ -121,11 +123,13 @@ Outcome stiff_implicit(IntegratorKind k) {
   const IntegratorKind other = k == IntegratorKind::gsl_msbdf ? IntegratorKind::odeint_rosenbrock4
                                                               : IntegratorKind::gsl_msbdf;
   for (double zeta : {1.0, 3.0}) {
-    const SimulationRequest req = request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
+    const SimulationRequest req =
+        request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
     compare(w, simulate(req), reference(req), "zeta=" + fmt(zeta) + " vs mp50");
   }
   for (double zeta : {100.0, 1000.0}) {
-    const SimulationRequest req = request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
+    const SimulationRequest req =
+        request(with(paper_scene(), 1.0, zeta), LawKind::elastoplastic, k);
     SimulationRequest alt = req;
     alt.integrator = other;
     const ImpactResult r = simulate(req);
@@ -154,9 +158,8 @@ Outcome stiff_explicit(IntegratorKind k) {
   const ImpactResult r = simulate(req);
   const ImpactResult ref = simulate(imp);
   if (r.status == ImpactStatus::failed) {
-    Outcome o = at_most(0.0, 0.0,
-                        "could not meet its tolerance and said so (an acceptable outcome): " +
-                            r.reason);
+    Outcome o = at_most(
+        0.0, 0.0, "could not meet its tolerance and said so (an acceptable outcome): " + r.reason);
     return o;
   }
   WorstError w;
@@ -201,12 +204,12 @@ void register_stability_cases(Registry& reg) {
     reg.add({"stability.fast-100." + n, "Fast impact v0 = 100 m/s (" + n + ")", Tier::stability,
              tol.reason, false, [k] { return velocity_extremes(k, 100.0); }});
     reg.add({"stability.yield-edge." + n,
-             "Maximum compression 1e-9 above and below the yield kink (" + n + ")",
-             Tier::stability, tol.reason, false, [k] { return yield_edge(k); }});
+             "Maximum compression 1e-9 above and below the yield kink (" + n + ")", Tier::stability,
+             tol.reason, false, [k] { return yield_edge(k); }});
     reg.add({"stability.capture." + n, "Capture (no rebound) ends with e = 0 (" + n + ")",
              Tier::stability, tol.reason, false, [k] { return capture(k); }});
-    reg.add({"stability.mass-extremes." + n, "Masses 1e-6 and 1e3 kg (" + n + ")",
-             Tier::stability, tol.reason, false, [k] { return mass_extremes(k); }});
+    reg.add({"stability.mass-extremes." + n, "Masses 1e-6 and 1e3 kg (" + n + ")", Tier::stability,
+             tol.reason, false, [k] { return mass_extremes(k); }});
     if (implicit(k)) {
       reg.add({"stability.stiff-dashpot." + n,
                "Weak dashpot zeta = 1 to 1000 (stiff): implicit integrator meets its tolerance (" +
@@ -215,12 +218,12 @@ void register_stability_cases(Registry& reg) {
                std::string(tol.reason) + "; two integrators each within it agree within twice it",
                false, [k] { return stiff_implicit(k); }});
     } else {
-      reg.add({"stability.stiff-dashpot." + n,
-               "zeta = 1000: explicit integrator meets its tolerance or reports failure (" + n +
-                   ")",
-               Tier::stability,
-               std::string(tol.reason) + "; against rosenbrock4, itself within it: twice it",
-               false, [k] { return stiff_explicit(k); }});
+      reg.add(
+          {"stability.stiff-dashpot." + n,
+           "zeta = 1000: explicit integrator meets its tolerance or reports failure (" + n + ")",
+           Tier::stability,
+           std::string(tol.reason) + "; against rosenbrock4, itself within it: twice it", false,
+           [k] { return stiff_explicit(k); }});
     }
   }
   reg.add({"stability.linearized-outside-domain",

@@ -60,16 +60,28 @@ Outcome slope_limit() {
                       "log-spaced v0 from v_y to 1e4 v_y): " +
                           fmt(worst, 3) + " at " + fmt(at, 4) + " v_y");
   o.reference = -0.25;
-  Plot plot{"cor-local-slope", "Local slope of the COR, undamped elastoplastic model",
-            "v0 / v_y", "d ln e / d ln v0", true, false, {}};
+  Plot plot{"cor-local-slope",
+            "Local slope of the COR, undamped elastoplastic model",
+            "v0 / v_y",
+            "d ln e / d ln v0",
+            true,
+            false,
+            {}};
   plot.series.push_back({"model", st.slope_ratio, st.slope, Series::Style::linespoints});
   plot.series.push_back({"-1/4 (eq. 21)", {1.0, 1e4}, {-0.25, -0.25}, Series::Style::dashed});
   o.plots.push_back(plot);
-  Plot cor{"cor-vs-v0-loglog", "COR against impact velocity (no dashpot)", "v0 / v_y", "e", true,
-           true, {}};
+  Plot cor{"cor-vs-v0-loglog",
+           "COR against impact velocity (no dashpot)",
+           "v0 / v_y",
+           "e",
+           true,
+           true,
+           {}};
   cor.series.push_back({"elastoplastic model", st.ratio, st.e, Series::Style::lines});
   const double c = st.e.back() * std::pow(1e4, 0.25);
-  cor.series.push_back({"C (v0/v_y)^{-1/4}", {10.0, 1e4}, {c * std::pow(10.0, -0.25), st.e.back()},
+  cor.series.push_back({"C (v0/v_y)^{-1/4}",
+                        {10.0, 1e4},
+                        {c * std::pow(10.0, -0.25), st.e.back()},
                         Series::Style::dashed});
   o.plots.push_back(cor);
   return o;
@@ -113,17 +125,19 @@ CorMap cor_map() {
   m.e.assign(m.zeta.size(), std::vector<double>(m.ratio.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!points[i].result.separated())
-      throw std::runtime_error("grid point v0 = " + fmt(points[i].v0) + ", zeta = " +
-                               fmt(points[i].zeta) + " did not separate: " +
-                               points[i].result.reason);
+      throw std::runtime_error("grid point v0 = " + fmt(points[i].v0) +
+                               ", zeta = " + fmt(points[i].zeta) +
+                               " did not separate: " + points[i].result.reason);
     m.e[i % m.zeta.size()][i / m.zeta.size()] = points[i].result.e;
   }
   return m;
 }
 
 Plot cor_map_plot(const CorMap& m) {
-  Plot p{"cor-map", "COR against v0 for several damping ratios (paper Fig. 14)", "v0 / v_y", "e",
-         true, false, {}};
+  Plot p{"cor-map",  "COR against v0 for several damping ratios (paper Fig. 14)",
+         "v0 / v_y", "e",
+         true,       false,
+         {}};
   for (std::size_t j = 0; j < m.zeta.size(); ++j)
     p.series.push_back({"zeta = " + fmt(m.zeta[j]), m.ratio, m.e[j], Series::Style::lines});
   return p;
@@ -148,8 +162,10 @@ Outcome monotone(bool by_zeta) {
     }
   Outcome o = at_least(smallest, 1e-6,
                        std::string("smallest relative fall of e between neighbours along ") +
-                           (by_zeta ? "zeta" : "v0") + " on a 30 x 10 grid (v0 1.5-100 v_y, zeta "
-                           "0-0.5): " + fmt(smallest, 3) + " at " + where);
+                           (by_zeta ? "zeta" : "v0") +
+                           " on a 30 x 10 grid (v0 1.5-100 v_y, zeta "
+                           "0-0.5): " +
+                           fmt(smallest, 3) + " at " + where);
   o.plots.push_back(cor_map_plot(m));
   return o;
 }
@@ -195,10 +211,15 @@ Outcome eq21() {
   }
   Outcome o = at_most(worst, 0.0,
                       "relative excess of the simulated e^2 over eq. 21, which must lie in "
-                      "[q/6, q/6 + (2/27) q^2/(1-q)]: " + detail +
-                          "worst distance outside the band " + fmt(worst, 3));
-  Plot plot{"eq21-limit", "Linearized model: e^2 over the high-velocity limit of eq. 21",
-            "v0 [m/s]", "e^2 / gamma^2(eq. 21) - 1", true, true, {}};
+                      "[q/6, q/6 + (2/27) q^2/(1-q)]: " +
+                          detail + "worst distance outside the band " + fmt(worst, 3));
+  Plot plot{"eq21-limit",
+            "Linearized model: e^2 over the high-velocity limit of eq. 21",
+            "v0 [m/s]",
+            "e^2 / gamma^2(eq. 21) - 1",
+            true,
+            true,
+            {}};
   plot.series.push_back({"simulated", vs, excess, Series::Style::linespoints});
   plot.series.push_back({"q/6 (first neglected term)", vs, lower, Series::Style::dashed});
   o.plots.push_back(plot);
@@ -259,13 +280,15 @@ Outcome displacement_after_force() {
     }
   return at_least(smallest, 1e-6,
                   "smallest of (t(alpha_c) - t(F_max))/t_f and (alpha_c - z_m)/z_m over v0 "
-                  "0.1-5 m/s, zeta 0.05-0.3: " + fmt(smallest, 3) + " at " + where);
+                  "0.1-5 m/s, zeta 0.05-0.3: " +
+                      fmt(smallest, 3) + " at " + where);
 }
 
 // Strictly monotone sequences: the smallest signed relative step, sign chosen so > 0 passes.
 double smallest_step(const std::vector<double>& y, int direction) {
   double s = INFINITY;
-  for (std::size_t i = 1; i < y.size(); ++i) s = std::min(s, direction * (y[i] - y[i - 1]) / std::abs(y[i - 1]));
+  for (std::size_t i = 1; i < y.size(); ++i)
+    s = std::min(s, direction * (y[i] - y[i - 1]) / std::abs(y[i - 1]));
   return s;
 }
 
@@ -283,11 +306,11 @@ Outcome fig8_yield_strength() {
     t.push_back(r.t_contact);
   }
   const double m = std::min(smallest_step(F, +1), smallest_step(t, -1));
-  return at_least(m, 1e-6,
-                  "S_y = 50.5-202 MPa at 1 m/s, c = 11440 N s/m: F_max rises (" + fmt(F.front(), 5) +
-                      " to " + fmt(F.back(), 5) + " N) and contact time falls (" +
-                      fmt(1e3 * t.front(), 4) + " to " + fmt(1e3 * t.back(), 4) +
-                      " ms) with S_y; smallest relative step " + fmt(m, 3));
+  return at_least(
+      m, 1e-6,
+      "S_y = 50.5-202 MPa at 1 m/s, c = 11440 N s/m: F_max rises (" + fmt(F.front(), 5) + " to " +
+          fmt(F.back(), 5) + " N) and contact time falls (" + fmt(1e3 * t.front(), 4) + " to " +
+          fmt(1e3 * t.back(), 4) + " ms) with S_y; smallest relative step " + fmt(m, 3));
 }
 
 Outcome fig9_mass() {
@@ -303,7 +326,8 @@ Outcome fig9_mass() {
   return at_least(m, 1e-6,
                   "m = 0.1-1 kg at 1 m/s: F_max " + fmt(F.front(), 5) + " to " + fmt(F.back(), 5) +
                       " N and contact time " + fmt(1e3 * t.front(), 4) + " to " +
-                      fmt(1e3 * t.back(), 4) + " ms both rise with mass; smallest step " + fmt(m, 3));
+                      fmt(1e3 * t.back(), 4) + " ms both rise with mass; smallest step " +
+                      fmt(m, 3));
 }
 
 Outcome fig12_13_damping() {
@@ -317,7 +341,8 @@ Outcome fig12_13_damping() {
   const double m = std::min({smallest_step(F, -1), smallest_step(t, +1), smallest_step(zf, -1)});
   return at_least(m, 1e-6,
                   "zeta 0.05-0.3 at 1 m/s: F_max falls, contact time rises, permanent spring set "
-                  "z_f falls (" + fmt(1e3 * zf.front(), 4) + " to " + fmt(1e3 * zf.back(), 4) +
+                  "z_f falls (" +
+                      fmt(1e3 * zf.front(), 4) + " to " + fmt(1e3 * zf.back(), 4) +
                       " mm); smallest relative step " + fmt(m, 3));
 }
 
@@ -341,8 +366,8 @@ Outcome hunt_crossley_longer_contact() {
   double smallest = INFINITY;
   std::string detail;
   for (double v0 : {1.0, 5.0}) {
-    SimulationRequest req = request(paper_at(v0), LawKind::elastoplastic,
-                                    IntegratorKind::odeint_dopri5);
+    SimulationRequest req =
+        request(paper_at(v0), LawKind::elastoplastic, IntegratorKind::odeint_dopri5);
     const HuntCrossleyFit fit = fit_hunt_crossley(req);
     const double ratio = fit.t_contact_hc / fit.t_contact_model;
     const double depth = fit.model.alpha_max / fit.hc.alpha_max;  // > 1: HC indents less
@@ -368,8 +393,8 @@ Outcome thornton_same_exponent() {
       (log_ratio.back() - log_ratio.front()) / (std::log(ratios.back()) - std::log(ratios.front()));
   Outcome o = absolute(slope, 0.0, 0.01,
                        "slope of ln(e_model / e_Thornton) against ln v0 over 100-1e4 v_y "
-                       "(V_y of Thornton = the model's v_y): " + fmt(slope, 4) +
-                           " - both fall as v0^{-1/4}; the constants differ (" +
+                       "(V_y of Thornton = the model's v_y): " +
+                           fmt(slope, 4) + " - both fall as v0^{-1/4}; the constants differ (" +
                            fmt(std::exp(log_ratio.back()), 4) + " at 1e4 v_y)");
   std::vector<double> model, thornton, all = log_grid(0.5, 1e4, 40);
   for (double r : all) {
@@ -384,7 +409,8 @@ Outcome thornton_same_exponent() {
 }
 
 Outcome thornton_table() {
-  const auto rows = oracles::read_thornton_table(oracles::reference_data_dir() / "thornton_1997.csv");
+  const auto rows =
+      oracles::read_thornton_table(oracles::reference_data_dir() / "thornton_1997.csv");
   WorstError w;
   for (const auto& row : rows) w.add(oracles::thornton_cor(row.r), row.e, "r=" + fmt(row.r));
   return worst_case(w, 1e-12,
@@ -418,10 +444,14 @@ Outcome damping_map(const oracles::DampingMap& map) {
                              " map against the delivered e of reference_data/"
                              "hunt_crossley_mu_maps.csv");
   Plot plot{"mu-map-" + std::string(map.name),
-            "Delivered against target COR: " + std::string(map.name), "target e", "delivered e",
-            false, false, {}};
-  plot.series.push_back({std::string(map.name) + " (simulated)", target, delivered,
-                         Series::Style::linespoints});
+            "Delivered against target COR: " + std::string(map.name),
+            "target e",
+            "delivered e",
+            false,
+            false,
+            {}};
+  plot.series.push_back(
+      {std::string(map.name) + " (simulated)", target, delivered, Series::Style::linespoints});
   plot.series.push_back({"target", {0.0, 1.0}, {0.0, 1.0}, Series::Style::dashed});
   o.plots.push_back(plot);
   return o;
@@ -440,7 +470,8 @@ void register_published_trend_cases(Registry& reg) {
            "adds < 1e-5; 1e-3",
            false, slope_near_yield});
   reg.add({"trend.cor-falls-with-zeta", "e strictly decreasing in zeta at fixed v0 (30 x 10 grid)",
-           T, "a fall must exceed 1e-6 relative to be resolved: 1e5 times the error of e (rtol 1e-12)",
+           T,
+           "a fall must exceed 1e-6 relative to be resolved: 1e5 times the error of e (rtol 1e-12)",
            false, [] { return monotone(true); }});
   reg.add({"trend.cor-falls-with-v0",
            "e strictly decreasing in v0 above yield at fixed zeta (30 x 10 grid)", T,
@@ -462,16 +493,15 @@ void register_published_trend_cases(Registry& reg) {
            "histories (Figs 4, 6) would show as visibly separate curves",
            false, linear_close_to_nonlinear});
   reg.add({"trend.paper.displacement-after-force",
-           "With damping the maximum displacement comes after the maximum force (z_m < alpha_c)",
-           T, "strict order resolved above the event-time precision (1e-12) by a margin of 1e-6",
+           "With damping the maximum displacement comes after the maximum force (z_m < alpha_c)", T,
+           "strict order resolved above the event-time precision (1e-12) by a margin of 1e-6",
            false, displacement_after_force});
   reg.add({"trend.paper.fig8-yield-strength",
            "Lower yield strength gives lower F_max and longer contact (Fig. 8)", T,
            "monotone over four S_y, each step resolved above 1e-6 relative", false,
            fig8_yield_strength});
-  reg.add({"trend.paper.fig9-mass", "Lower mass gives lower F_max and shorter contact (Fig. 9)",
-           T, "monotone over four masses, each step resolved above 1e-6 relative", false,
-           fig9_mass});
+  reg.add({"trend.paper.fig9-mass", "Lower mass gives lower F_max and shorter contact (Fig. 9)", T,
+           "monotone over four masses, each step resolved above 1e-6 relative", false, fig9_mass});
   reg.add({"trend.paper.fig12-13-damping",
            "Higher zeta: lower F_max, longer contact, less permanent spring set (Figs 12-13)", T,
            "monotone over four zeta, each step resolved above 1e-6 relative", false,

@@ -11,12 +11,14 @@
 namespace ivv::verification {
 
 namespace {
-constexpr std::array kTiers = {Tier::analytic,        Tier::cross_implementation,
-                               Tier::conservation,    Tier::published_trend,
-                               Tier::convergence,     Tier::stability};
+constexpr std::array kTiers = {Tier::analytic,     Tier::cross_implementation,
+                               Tier::conservation, Tier::published_trend,
+                               Tier::convergence,  Tier::stability};
 }  // namespace
 
-std::span<const Tier> all_tiers() { return kTiers; }
+std::span<const Tier> all_tiers() {
+  return kTiers;
+}
 
 std::string_view to_string(Tier t) {
   switch (t) {
@@ -53,7 +55,8 @@ std::string_view to_string(Comparison c) {
 double Outcome::error() const {
   switch (comparison) {
     case Comparison::relative:
-      return reference == 0 ? std::abs(measured) : std::abs(measured - reference) / std::abs(reference);
+      return reference == 0 ? std::abs(measured)
+                            : std::abs(measured - reference) / std::abs(reference);
     case Comparison::absolute:
       return std::abs(measured - reference);
     case Comparison::at_most:
@@ -111,7 +114,8 @@ Outcome at_least(double measured, double bound, std::string detail) {
 
 void Registry::add(Case c) {
   if (c.id.empty() || !c.run) throw std::logic_error("verification case without id or body");
-  if (c.reason.empty()) throw std::logic_error("case " + c.id + " does not say why its tolerance is what it is");
+  if (c.reason.empty())
+    throw std::logic_error("case " + c.id + " does not say why its tolerance is what it is");
   for (const auto& existing : cases_)
     if (existing.id == c.id) throw std::logic_error("duplicate verification case id " + c.id);
   cases_.push_back(std::move(c));

@@ -18,17 +18,23 @@
 
 namespace ivv::verification {
 
-enum class Tier { analytic, cross_implementation, conservation, published_trend, convergence,
-                  stability };
+enum class Tier {
+  analytic,
+  cross_implementation,
+  conservation,
+  published_trend,
+  convergence,
+  stability
+};
 std::span<const Tier> all_tiers();
 std::string_view to_string(Tier t);
 
 // How `measured` is judged against `reference` and `tolerance`.
 enum class Comparison {
-  relative,   // |measured - reference| <= tolerance * |reference|
-  absolute,   // |measured - reference| <= tolerance
-  at_most,    // measured <= tolerance          (reference unused: e.g. a maximum error)
-  at_least,   // measured >= tolerance          (e.g. a margin that must stay positive)
+  relative,  // |measured - reference| <= tolerance * |reference|
+  absolute,  // |measured - reference| <= tolerance
+  at_most,   // measured <= tolerance          (reference unused: e.g. a maximum error)
+  at_least,  // measured >= tolerance          (e.g. a margin that must stay positive)
 };
 std::string_view to_string(Comparison c);
 

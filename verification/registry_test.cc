@@ -51,8 +51,8 @@ TEST(Glob, MatchesShellStyle) {
 }
 
 TEST(RunCase, ExceptionBecomesFailureNamingIt) {
-  const Case c{"x", "throws", Tier::analytic, "r", false,
-               []() -> Outcome { throw std::runtime_error("boom"); }};
+  const Case c{"x", "throws", Tier::analytic,
+               "r", false,    []() -> Outcome { throw std::runtime_error("boom"); }};
   const CaseRecord rec = run_case(c);
   EXPECT_FALSE(rec.outcome.passed);
   EXPECT_NE(rec.outcome.detail.find("boom"), std::string::npos);

@@ -18,7 +18,8 @@ std::vector<GridScene> paper_grid() {
   std::vector<GridScene> g;
   for (double v0 : {0.1, 1.0, 5.0})
     for (double zeta : {0.0, 0.05, 0.1, 0.3})
-      g.push_back({"paper v0=" + fmt(v0, 3) + " zeta=" + fmt(zeta, 3), with(paper_scene(), v0, zeta)});
+      g.push_back(
+          {"paper v0=" + fmt(v0, 3) + " zeta=" + fmt(zeta, 3), with(paper_scene(), v0, zeta)});
   return g;
 }
 
@@ -57,8 +58,8 @@ std::vector<GridScene> extended_grid() {
     Scene s = paper_scene();
     s.mass = mass;
     for (double v0 : {0.1, 5.0})
-      g.push_back({"paper m=" + fmt(mass, 3) + "kg v0=" + fmt(v0, 3) + " zeta=0.1",
-                   with(s, v0, 0.1)});
+      g.push_back(
+          {"paper m=" + fmt(mass, 3) + "kg v0=" + fmt(v0, 3) + " zeta=0.1", with(s, v0, 0.1)});
   }
   return g;
 }

@@ -16,10 +16,11 @@ struct Tolerance {
 inline Tolerance default_settings_tolerance(IntegratorKind k) {
   switch (k) {
     case IntegratorKind::rk4:
-      return {1e-7,
-              "rk4 at its default step h = 1e-3 (normalised): global error C h^4 ~ 1e-12 C on smooth "
-              "phases, but the Hertz onset F ~ z^{3/2} is not smooth at z = 0 and costs one step of "
-              "local error ~h^{5/2} ~ 3e-8; 1e-7 covers that term with a factor 3"};
+      return {
+          1e-7,
+          "rk4 at its default step h = 1e-3 (normalised): global error C h^4 ~ 1e-12 C on smooth "
+          "phases, but the Hertz onset F ~ z^{3/2} is not smooth at z = 0 and costs one step of "
+          "local error ~h^{5/2} ~ 3e-8; 1e-7 covers that term with a factor 3"};
     case IntegratorKind::mp50:
       return {1e-12,
               "mp50 integrates at 1e-26; the comparison is limited by the closed forms in double "
@@ -36,13 +37,15 @@ inline Tolerance default_settings_tolerance(IntegratorKind k) {
 inline Tolerance conservation_tolerance(IntegratorKind k) {
   switch (k) {
     case IntegratorKind::rk4:
-      return {1e-7, "the quadratures ride on the same rk4 steps: their error is that of the "
-                    "solution, bounded as for e (1e-7, onset term h^{5/2})"};
+      return {1e-7,
+              "the quadratures ride on the same rk4 steps: their error is that of the "
+              "solution, bounded as for e (1e-7, onset term h^{5/2})"};
     case IntegratorKind::mp50:
       return {1e-13, "50-digit integration; closed-form loop area and rounding to double"};
     default:
-      return {1e-7, "quadratures integrated with the state at rtol = 1e-10: global error at most "
-                    "N rtol with N <= 1000 steps, as for e"};
+      return {1e-7,
+              "quadratures integrated with the state at rtol = 1e-10: global error at most "
+              "N rtol with N <= 1000 steps, as for e"};
   }
 }
 

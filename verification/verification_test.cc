@@ -19,13 +19,14 @@ TEST_P(VerificationCase, Passes) {
   EXPECT_TRUE(o.passed) << c.id << " (" << to_string(c.tier) << "): " << c.title << "\n"
                         << "  measured  " << o.measured << "\n"
                         << "  reference " << o.reference << "\n"
-                        << "  tolerance " << o.tolerance << " (" << to_string(o.comparison)
-                        << ")\n"
+                        << "  tolerance " << o.tolerance << " (" << to_string(o.comparison) << ")\n"
                         << "  why       " << c.reason << "\n"
                         << "  detail    " << o.detail;
 }
 
-std::vector<const Case*> every_case() { return all_cases().matching(""); }
+std::vector<const Case*> every_case() {
+  return all_cases().matching("");
+}
 
 std::string test_name(const ::testing::TestParamInfo<const Case*>& info) {
   std::string n = (info.param->slow ? "SLOW_" : "") + info.param->id;

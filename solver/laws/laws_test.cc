@@ -15,7 +15,9 @@ namespace {
 // Closed-form algebra in double: a few ulps of the largest term.
 constexpr double kAlgebra = 1e-12;
 
-DerivedParameters paper() { return derive(paper_scene()); }
+DerivedParameters paper() {
+  return derive(paper_scene());
+}
 
 TEST(Hertz, LoadingFollowsThreeHalvesPowerAndUnloadsOnTheSameCurve) {
   const HertzLaw law{2.0e9};

@@ -56,8 +56,8 @@ struct LinearizedLaw {
     if (!(ratio <= 1)) {
       std::ostringstream os;
       os << "linearized law undefined: maximum spring deformation z_m = "
-         << static_cast<double>(z_m) << " m is below (K_y/K_h)^2 = 2.25 z_y = "
-         << minimum_z_max() << " m (paper eq. 17 needs K_y/(K_h sqrt(z_m)) <= 1); "
+         << static_cast<double>(z_m) << " m is below (K_y/K_h)^2 = 2.25 z_y = " << minimum_z_max()
+         << " m (paper eq. 17 needs K_y/(K_h sqrt(z_m)) <= 1); "
          << "use the elastoplastic law at this velocity";
       throw LawDomainError(os.str());
     }

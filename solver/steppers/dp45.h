@@ -31,8 +31,8 @@ inline constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448
 inline constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
                         a64 = 49.0 / 176, a65 = -5103.0 / 18656;
 // fifth-order weights (= row 7, FSAL)
-inline constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192,
-                        b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+inline constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784,
+                        b6 = 11.0 / 84;
 // b - b* (b* the fourth-order weights)
 inline constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
                         e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
@@ -52,7 +52,9 @@ class Dp45Stepper {
   static constexpr int order = 5;
 
   explicit Dp45Stepper(const IntegratorOptions& opt)
-      : rtol_(opt.rtol), atol_(opt.atol), fixed_(opt.fixed_step),
+      : rtol_(opt.rtol),
+        atol_(opt.atol),
+        fixed_(opt.fixed_step),
         h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
 
   void start(const System& sys, T t, const state_type& x) {
@@ -81,12 +83,11 @@ class Dp45Stepper {
         tmp[i] = x0_[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
       sys(tmp, k5_, t0_ + c5 * h);
       for (std::size_t i = 0; i < n; ++i)
-        tmp[i] = x0_[i] + h * (a61 * k1_[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] +
-                               a65 * k5_[i]);
+        tmp[i] =
+            x0_[i] + h * (a61 * k1_[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] + a65 * k5_[i]);
       sys(tmp, k6_, t0_ + h);
       for (std::size_t i = 0; i < n; ++i)
-        x1_[i] = x0_[i] + h * (b1 * k1_[i] + b3 * k3_[i] + b4 * k4_[i] + b5 * k5_[i] +
-                               b6 * k6_[i]);
+        x1_[i] = x0_[i] + h * (b1 * k1_[i] + b3 * k3_[i] + b4 * k4_[i] + b5 * k5_[i] + b6 * k6_[i]);
       sys(x1_, k7_, t0_ + h);
       if (fixed_) {
         t1_ = t0_ + h;
@@ -95,8 +96,8 @@ class Dp45Stepper {
       }
       T sum = 0;
       for (std::size_t i = 0; i < n; ++i) {
-        err[i] = h * (e1 * k1_[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] +
-                      e7 * k7_[i]);
+        err[i] =
+            h * (e1 * k1_[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] + e7 * k7_[i]);
         using std::abs;
         using std::max;
         const T scale = atol_ + rtol_ * max(abs(x0_[i]), abs(x1_[i]));
@@ -105,8 +106,7 @@ class Dp45Stepper {
       using std::pow;
       using std::sqrt;
       const T norm = sqrt(sum / T(n));
-      const T factor =
-          norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
+      const T factor = norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
       if (!(norm == norm)) {  // NaN: the state left the law's domain
         h_ = h * T(0.2);
         ++rejected_;
@@ -137,8 +137,8 @@ class Dp45Stepper {
       const T r1 = x1_[i] - x0_[i];
       const T r2 = h * k1_[i] - r1;
       const T r3 = r1 - h * k7_[i] - r2;
-      const T r4 = h * (d1 * k1_[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] +
-                        d7 * k7_[i]);
+      const T r4 =
+          h * (d1 * k1_[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] + d7 * k7_[i]);
       out[i] = x0_[i] + th * (r1 + om * (r2 + th * (r3 + om * r4)));
     }
   }

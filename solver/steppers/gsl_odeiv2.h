@@ -77,8 +77,8 @@ class GslStepper {
       : opt_(opt), system_(std::make_unique<gsl_odeiv2_system>()), h_(opt.initial_dt) {
     gsl_detail::disable_abort_on_error();
     *system_ = {&gsl_detail::rhs<System>, &gsl_detail::jacobian<System>, N, nullptr};
-    driver_.reset(gsl_odeiv2_driver_alloc_y_new(system_.get(), type(), opt.initial_dt, opt.atol,
-                                                opt.rtol));
+    driver_.reset(
+        gsl_odeiv2_driver_alloc_y_new(system_.get(), type(), opt.initial_dt, opt.atol, opt.rtol));
   }
 
   void start(const System& sys, T t, const state_type& x) {
@@ -99,8 +99,8 @@ class GslStepper {
     gsl_odeiv2_driver* d = driver_.get();
     const int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, opt_.tau_max, &h_, y);
     if (status != GSL_SUCCESS || !(t > t0_)) {
-      return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) + " at tau = " +
-                                 std::to_string(t0_));
+      return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
+                                 " at tau = " + std::to_string(t0_));
     }
     t1_ = t;
     for (std::size_t i = 0; i < N; ++i) x1_[i] = y[i];
@@ -123,8 +123,8 @@ class GslStepper {
       gsl_odeiv2_step_apply(driver_->s, t0_, t - t0_, y, yerr, f, nullptr, system_.get());
     } else {
       if (!refine_driver_) {
-        refine_driver_.reset(gsl_odeiv2_driver_alloc_y_new(system_.get(), type(),
-                                                           opt_.initial_dt, opt_.atol, opt_.rtol));
+        refine_driver_.reset(gsl_odeiv2_driver_alloc_y_new(system_.get(), type(), opt_.initial_dt,
+                                                           opt_.atol, opt_.rtol));
       }
       gsl_odeiv2_driver_reset_hstart(refine_driver_.get(), std::min(opt_.initial_dt, t - t0_));
       double tt = t0_;

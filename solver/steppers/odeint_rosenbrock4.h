@@ -30,7 +30,8 @@ class OdeintRosenbrock4Stepper {
   explicit OdeintRosenbrock4Stepper(const IntegratorOptions& opt)
       : stepper_(boost::numeric::odeint::make_dense_output(
             opt.atol, opt.rtol, boost::numeric::odeint::rosenbrock4<double>())),
-        dt_(opt.initial_dt), buffer_(N) {}
+        dt_(opt.initial_dt),
+        buffer_(N) {}
 
   void start(const System&, T t, const state_type& x) {
     if (started_) dt_ = stepper_.current_time_step();
