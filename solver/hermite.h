@@ -25,4 +25,53 @@ void hermite_interpolate(const T& t0, const State& x0, const State& f0, const T&
     out[i] = h00 * x0[i] + h10 * f0[i] + h01 * x1[i] + h11 * f1[i];
 }
 
+// The step bookkeeping of a stepper without dense output: the last accepted step's end points
+// and their derivatives, the cubic Hermite interpolant over it, and the accessors the driver
+// (impact_driver.h) uses to refine events by re-stepping. A stepper derives from it, calls
+// begin_step() before taking a step from (t1, x1) and end_step() with the new point after.
+template <class System>
+class HermiteSteps {
+ public:
+  using state_type = typename System::state_type;
+  using T = typename System::value_type;
+  static constexpr bool dense_output = false;
+
+  // A new smooth phase starts at (t, x): it becomes the end of a zero-length step.
+  void start(const System& sys, T t, const state_type& x) {
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, f1_, t1_);
+  }
+
+  void interpolate(const System&, T t, state_type& out) const {
+    hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
+  }
+
+  T t0() const { return t0_; }
+  T t1() const { return t1_; }
+  const state_type& x0() const { return x0_; }
+  const state_type& x1() const { return x1_; }
+  const state_type& f0() const { return f0_; }
+  const state_type& f1() const { return f1_; }
+  long steps() const { return steps_; }
+
+ protected:
+  void begin_step() {
+    t0_ = t1_;
+    x0_ = x1_;
+    f0_ = f1_;
+  }
+  // Records the accepted step's end (one right-hand-side evaluation: the next step's f0).
+  void end_step(const System& sys, T t, const state_type& x) {
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, f1_, t1_);
+    ++steps_;
+  }
+
+  T t0_{}, t1_{};
+  state_type x0_{}, x1_{}, f0_{}, f1_{};
+  long steps_ = 0;
+};
+
 }  // namespace ivv

@@ -106,12 +106,11 @@ class Dp45Stepper {
       using std::pow;
       using std::sqrt;
       const T norm = sqrt(sum / T(n));
-      const T factor = norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
       if (!(norm == norm)) {  // NaN: the state left the law's domain
         h_ = h * T(0.2);
-        ++rejected_;
         continue;
       }
+      const T factor = norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
       if (norm <= 1) {
         t1_ = t0_ + h;
         h_ = h * factor;
@@ -119,7 +118,6 @@ class Dp45Stepper {
         return StepResult::success();
       }
       h_ = h * factor;
-      ++rejected_;
       if (h_ <= 1e-14 * (1 + (t0_ < 0 ? -t0_ : t0_))) break;
     }
     std::ostringstream os;
@@ -148,7 +146,6 @@ class Dp45Stepper {
   const state_type& x0() const { return x0_; }
   const state_type& x1() const { return x1_; }
   long steps() const { return steps_; }
-  long rejected() const { return rejected_; }
 
  private:
   T rtol_, atol_;
@@ -157,7 +154,7 @@ class Dp45Stepper {
   T t0_{}, t1_{};
   state_type x0_{}, x1_{};
   state_type k1_{}, k2_{}, k3_{}, k4_{}, k5_{}, k6_{}, k7_{};
-  long steps_ = 0, rejected_ = 0;
+  long steps_ = 0;
 };
 
 }  // namespace ivv

@@ -64,12 +64,11 @@ using DriverPtr = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
 enum class GslMethod { rk8pd, msbdf };
 
 template <class System, GslMethod Method>
-class GslStepper {
+class GslStepper : public HermiteSteps<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
   static constexpr std::string_view name = Method == GslMethod::rk8pd ? "gsl-rk8pd" : "gsl-msbdf";
-  static constexpr bool dense_output = false;
   static constexpr int order = Method == GslMethod::rk8pd ? 8 : 5;
   static constexpr std::size_t N = System::N;
 
@@ -84,15 +83,11 @@ class GslStepper {
   void start(const System& sys, T t, const state_type& x) {
     system_->params = const_cast<System*>(&sys);
     gsl_odeiv2_driver_reset(driver_.get());
-    t1_ = t;
-    x1_ = x;
-    sys(x1_, f1_, t1_);
+    HermiteSteps<System>::start(sys, t, x);
   }
 
   StepResult step(const System& sys) {
-    t0_ = t1_;
-    x0_ = x1_;
-    f0_ = f1_;
+    this->begin_step();
     double y[N];
     for (std::size_t i = 0; i < N; ++i) y[i] = x0_[i];
     double t = t0_;
@@ -102,15 +97,10 @@ class GslStepper {
       return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
                                  " at tau = " + std::to_string(t0_));
     }
-    t1_ = t;
-    for (std::size_t i = 0; i < N; ++i) x1_[i] = y[i];
-    sys(x1_, f1_, t1_);
-    ++steps_;
+    state_type x1;
+    for (std::size_t i = 0; i < N; ++i) x1[i] = y[i];
+    this->end_step(sys, t, x1);
     return StepResult::success();
-  }
-
-  void interpolate(const System&, T t, state_type& out) const {
-    hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
   }
 
   // The state at t in (t0, t1], integrated from the step's start.
@@ -133,15 +123,12 @@ class GslStepper {
     for (std::size_t i = 0; i < N; ++i) out[i] = y[i];
   }
 
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
-  const state_type& f0() const { return f0_; }
-  const state_type& f1() const { return f1_; }
-  long steps() const { return steps_; }
-
  private:
+  using Base = HermiteSteps<System>;
+  using Base::f0_;
+  using Base::t0_;
+  using Base::x0_;
+
   static const gsl_odeiv2_step_type* type() {
     return Method == GslMethod::rk8pd ? gsl_odeiv2_step_rk8pd : gsl_odeiv2_step_msbdf;
   }
@@ -149,9 +136,6 @@ class GslStepper {
   std::unique_ptr<gsl_odeiv2_system> system_;
   gsl_detail::DriverPtr driver_, refine_driver_;
   double h_;
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{}, f0_{}, f1_{};
-  long steps_ = 0;
 };
 
 }  // namespace ivv

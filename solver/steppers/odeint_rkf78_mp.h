@@ -10,6 +10,7 @@
 #include <boost/numeric/odeint.hpp>
 #include <sstream>
 
+#include "solver/hermite.h"
 #include "solver/integrator_options.h"
 #include "solver/steppers/step_result.h"
 
@@ -38,28 +39,19 @@ struct MpErrorChecker {
 };
 
 template <class System>
-class OdeintRkf78MpStepper {
+class OdeintRkf78MpStepper : public HermiteSteps<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
   static constexpr std::string_view name = "mp50";
-  static constexpr bool dense_output = false;
   static constexpr int order = 8;
 
   explicit OdeintRkf78MpStepper(const IntegratorOptions& opt)
       : controlled_(MpErrorChecker<T>{T(opt.reference_tolerance), T(opt.reference_tolerance)}),
         h_(opt.initial_dt * 1e-3) {}
 
-  void start(const System& sys, T t, const state_type& x) {
-    t1_ = t;
-    x1_ = x;
-    sys(x1_, f1_, t1_);
-  }
-
   StepResult step(const System& sys) {
-    t0_ = t1_;
-    x0_ = x1_;
-    f0_ = f1_;
+    this->begin_step();
     auto rhs = [&sys](const state_type& x, state_type& dxdt, T t) { sys(x, dxdt, t); };
     T t = t0_;
     state_type x = x0_;
@@ -71,10 +63,7 @@ class OdeintRkf78MpStepper {
         return StepResult::failure(os.str());
       }
     }
-    t1_ = t;
-    x1_ = x;
-    sys(x1_, f1_, t1_);
-    ++steps_;
+    this->end_step(sys, t, x);
     return StepResult::success();
   }
 
@@ -83,28 +72,18 @@ class OdeintRkf78MpStepper {
     error_stepper().do_step(rhs, x0_, t0_, out, t - t0_);
   }
 
-  void interpolate(const System&, T t, state_type& out) const {
-    hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
-  }
-
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
-  const state_type& f0() const { return f0_; }
-  const state_type& f1() const { return f1_; }
-  long steps() const { return steps_; }
-
  private:
+  using Base = HermiteSteps<System>;
+  using Base::f0_;
+  using Base::t0_;
+  using Base::x0_;
+
   using error_stepper =
       boost::numeric::odeint::runge_kutta_fehlberg78<state_type, T, state_type, T>;
   using controlled_type =
       boost::numeric::odeint::controlled_runge_kutta<error_stepper, MpErrorChecker<T>>;
   controlled_type controlled_;
   T h_;
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{}, f0_{}, f1_{};
-  long steps_ = 0;
 };
 
 }  // namespace ivv

@@ -23,26 +23,17 @@
 namespace ivv {
 
 template <class System>
-class Rk4Stepper {
+class Rk4Stepper : public HermiteSteps<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
   static constexpr std::string_view name = "rk4";
-  static constexpr bool dense_output = false;
   static constexpr int order = 4;
 
   explicit Rk4Stepper(const IntegratorOptions& opt) : h_(opt.fixed_dt()) {}
 
-  void start(const System& sys, T t, const state_type& x) {
-    t1_ = t;
-    x1_ = x;
-    sys(x1_, f1_, t1_);
-  }
-
   StepResult step(const System& sys) {
-    t0_ = t1_;
-    x0_ = x1_;
-    f0_ = f1_;
+    this->begin_step();
     for (const auto& lambda : sys.eigenvalues(x0_)) {
       const std::complex<double> z = lambda * static_cast<double>(h_);
       const std::complex<double> R = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6 + z / 24.0)));
@@ -54,29 +45,21 @@ class Rk4Stepper {
         return StepResult::failure(os.str());
       }
     }
-    advance(sys, h_, x1_);
-    t1_ = t0_ + h_;
-    sys(x1_, f1_, t1_);
-    ++steps_;
+    state_type x1;
+    advance(sys, h_, x1);
+    this->end_step(sys, t0_ + h_, x1);
     return StepResult::success();
   }
 
   // Exact RK4 step of length t - t0 from the current step's start.
   void restep(const System& sys, T t, state_type& out) const { advance(sys, t - t0_, out); }
 
-  void interpolate(const System&, T t, state_type& out) const {
-    hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
-  }
-
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
-  const state_type& f0() const { return f0_; }
-  const state_type& f1() const { return f1_; }
-  long steps() const { return steps_; }
-
  private:
+  using Base = HermiteSteps<System>;
+  using Base::f0_;
+  using Base::t0_;
+  using Base::x0_;
+
   void advance(const System& sys, T h, state_type& out) const {
     state_type k2, k3, k4, tmp;
     const std::size_t n = x0_.size();
@@ -91,9 +74,6 @@ class Rk4Stepper {
   }
 
   T h_;
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{}, f0_{}, f1_{};
-  long steps_ = 0;
 };
 
 }  // namespace ivv
