@@ -1,5 +1,6 @@
 // Cross-implementation tier: every double-precision integrator against the 50-digit reference
 // (mp50), which shares only the laws and event definitions with them.
+#include "oracles/linear_model.h"
 #include "verification/cases.h"
 #include "verification/support.h"
 #include "verification/tolerances.h"
@@ -81,18 +82,31 @@ void register_cross_implementation_cases(Registry& reg) {
   }
   for (IntegratorKind k : double_integrators()) {
     const Tolerance tol = default_settings_tolerance(k);
-    reg.add({"cross.extended-scenes." + std::string(to_string(k)),
-             "Elastoplastic law on other material pairs and masses 1e-3-10 kg: " +
-                 std::string(to_string(k)) + " vs the 50-digit reference",
-             Tier::cross_implementation, tol.reason, true, [k, tol] {
-               std::vector<SimulationRequest> reqs;
-               std::vector<std::string> labels;
-               for (const GridScene& gs : extended_grid()) {
-                 reqs.push_back(request(gs.scene, LawKind::elastoplastic, k));
-                 labels.push_back(gs.label);
-               }
-               return against_reference(reqs, labels, k, tol.value);
-             }});
+    reg.add(
+        {"cross.extended-scenes." + std::string(to_string(k)),
+         "Every law on other material pairs and masses 1e-3-10 kg: " + std::string(to_string(k)) +
+             " vs the 50-digit reference",
+         Tier::cross_implementation, tol.reason, true, [k, tol] {
+           std::vector<SimulationRequest> reqs;
+           std::vector<std::string> labels;
+           for (const GridScene& gs : extended_grid()) {
+             for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
+               reqs.push_back(request(gs.scene, law, k));
+               labels.push_back(std::string(to_string(law)) + " " + gs.label);
+             }
+             // the linearized law only where its closed form says it is defined
+             try {
+               oracles::solve_linear_model(oracles::linear_model_input(gs.scene, derive(gs.scene)));
+               reqs.push_back(request(gs.scene, LawKind::linearized, k));
+               labels.push_back("linearized " + gs.label);
+             } catch (const oracles::LinearizedLawUndefined&) {
+             }
+             // Hunt-Crossley (no dashpot) with mu v0 = 1
+             reqs.push_back(request(gs.scene, LawKind::hunt_crossley, k, 1.0 / gs.scene.velocity));
+             labels.push_back("hunt-crossley mu v0=1 " + gs.label);
+           }
+           return against_reference(reqs, labels, k, tol.value);
+         }});
   }
 }
 
