@@ -20,14 +20,36 @@ namespace ivv::mpi {
 namespace {
 
 enum Tag : int {
-  kRequest = 1,  // rank -> 0: rows of the last chunk ("index row" lines), and a request for more
-  kWork = 2,     // 0 -> rank: indices (uint64); none means: no more work, finish
-  kError = 3,    // rank -> 0: a point threw; the message names it
+  kRequest = 1,  // rank -> 0: rows of a finished chunk ("index row" lines), and an order for
+                 // one more chunk
+  kWork = 2,     // 0 -> rank: indices (uint64); none means: no more work
+  kFinal = 3,    // rank -> 0: rows of its last chunk; the rank is done
+  kError = 4,    // rank -> 0: a point threw; the message names it; the rank is done
 };
 
+// Open MPI's blocking calls poll without sleeping: a rank waiting for an answer would take a
+// core from the threads that compute. These wait by polling every 200 us instead.
+constexpr auto kPollInterval = std::chrono::microseconds(200);
+
+MPI_Status wait_for_message(int source, int tag) {
+  MPI_Status status;
+  for (int flag = 0;;) {
+    MPI_Iprobe(source, tag, MPI_COMM_WORLD, &flag, &status);
+    if (flag) return status;
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
+void wait_for(MPI_Request& request) {
+  for (int flag = 0;;) {
+    MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
+    if (flag) return;
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
 std::string receive_text(int source, int tag, MPI_Status* status) {
-  MPI_Status probe;
-  MPI_Probe(source, tag, MPI_COMM_WORLD, &probe);
+  MPI_Status probe = wait_for_message(source, tag);
   int count = 0;
   MPI_Get_count(&probe, MPI_CHAR, &count);
   std::string text(static_cast<std::size_t>(count), '\0');
@@ -37,12 +59,18 @@ std::string receive_text(int source, int tag, MPI_Status* status) {
 }
 
 void send_text(const std::string& text, int dest, int tag) {
-  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, dest, tag, MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Isend(text.data(), static_cast<int>(text.size()), MPI_CHAR, dest, tag, MPI_COMM_WORLD,
+            &request);
+  wait_for(request);
 }
 
 void send_work(const std::vector<std::size_t>& indices, int dest) {
   std::vector<std::uint64_t> v(indices.begin(), indices.end());
-  MPI_Send(v.data(), static_cast<int>(v.size()), MPI_UINT64_T, dest, kWork, MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Isend(v.data(), static_cast<int>(v.size()), MPI_UINT64_T, dest, kWork, MPI_COMM_WORLD,
+            &request);
+  wait_for(request);
 }
 
 // Rows come back as "index row\n" lines; a row itself contains no newline.
@@ -58,19 +86,24 @@ void deliver_lines(const std::string& text, SweepSink& sink) {
   }
 }
 
-// The rank's side: ask, compute, send back, until rank 0 says there is no more work.
+std::vector<std::uint64_t> receive_work() {
+  MPI_Status probe = wait_for_message(0, kWork);
+  int count = 0;
+  MPI_Get_count(&probe, MPI_UINT64_T, &count);
+  std::vector<std::uint64_t> chunk(static_cast<std::size_t>(count));
+  MPI_Recv(chunk.data(), count, MPI_UINT64_T, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return chunk;
+}
+
+// The rank's side: keep one chunk on order while computing another (so that the answer is
+// there when the chunk is done), send each chunk's rows with the next order, until rank 0
+// says there is no more work.
 void serve_as_worker(const SweepRequest& req) {
-  std::string rows;
-  while (true) {
+  send_text("", 0, kRequest);
+  std::vector<std::uint64_t> chunk = receive_work();
+  std::string rows;  // of the previous chunk
+  while (!chunk.empty()) {
     send_text(rows, 0, kRequest);
-    rows.clear();
-    MPI_Status probe;
-    MPI_Probe(0, kWork, MPI_COMM_WORLD, &probe);
-    int count = 0;
-    MPI_Get_count(&probe, MPI_UINT64_T, &count);
-    std::vector<std::uint64_t> chunk(static_cast<std::size_t>(count));
-    MPI_Recv(chunk.data(), count, MPI_UINT64_T, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (chunk.empty()) return;
     std::vector<std::string> out(chunk.size());
     try {
       // No stop flag: rank 0 decides when to stop; a chunk in flight is always finished.
@@ -84,11 +117,15 @@ void serve_as_worker(const SweepRequest& req) {
         what = cause.what();
       } catch (...) {
       }
-      send_text(what, 0, kError);
+      send_text(what, 0, kError);  // rank 0 stops handing out work, then answers the order
+      receive_work();              // (dropped: the sweep ends with the error)
       return;
     }
+    rows.clear();
     for (std::size_t j = 0; j < chunk.size(); ++j) rows += std::to_string(chunk[j]) + ' ' + out[j];
+    chunk = receive_work();
   }
+  send_text(rows, 0, kFinal);
 }
 
 // Rank 0: its own threads take chunks from the sink like any rank, while the main thread
@@ -119,7 +156,6 @@ void coordinate(World& world, const SweepRequest& req, SweepSink& sink,
     const std::vector<std::size_t> work = sink.take(chunk, false);
     if (work.empty() && !sink.exhausted()) return false;  // window full: ask again later
     send_work(work, rank);
-    if (work.empty()) --active;
     return true;
   };
   try {
@@ -145,8 +181,11 @@ void coordinate(World& world, const SweepRequest& req, SweepSink& sink,
         continue;
       }
       deliver_lines(text, sink);
-      local.progress(sink.done(), sink.total());
-      if (!answer(status.MPI_SOURCE)) waiting.push_back(status.MPI_SOURCE);
+      if (!text.empty()) local.progress(sink.done(), sink.total());
+      if (status.MPI_TAG == kFinal)
+        --active;
+      else if (!answer(status.MPI_SOURCE))
+        waiting.push_back(status.MPI_SOURCE);
     }
   } catch (...) {
     // The sink could not be written: the other ranks cannot be told through the protocol.
@@ -190,11 +229,12 @@ void World::abort(int code) {
 
 void run_sweep_ranks(World& world, const SweepRequest& req, SweepSink* sink,
                      const SweepRunOptions& options) {
-  // Chunks small enough that the slowest one does not hold up the end of the sweep, large
-  // enough that messages (~1 ms round trip) cost little against points of ~1 ms.
+  // Chunks of up to 1024 points (~0.1-1 s of work at 0.1-1 ms a point): messages and the
+  // service loop's 1 ms polling cost little against them, even on a loaded machine, and
+  // eight chunks per worker keep the slowest one from holding up the end of the sweep.
   const std::size_t workers = static_cast<std::size_t>(world.size()) *
                               static_cast<std::size_t>(worker_count(point_count(req), req.threads));
-  const std::size_t chunk = std::clamp<std::size_t>(point_count(req) / (16 * workers), 1, 64);
+  const std::size_t chunk = std::clamp<std::size_t>(point_count(req) / (8 * workers), 1, 1024);
   if (world.rank() == 0)
     coordinate(world, req, *sink, options, chunk);
   else
