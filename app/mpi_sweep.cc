@@ -73,8 +73,9 @@ void send_work(const std::vector<std::size_t>& indices, int dest) {
   wait_for(request);
 }
 
-// Rows come back as "index row\n" lines; a row itself contains no newline.
-void deliver_lines(const std::string& text, SweepSink& sink) {
+// Rows come back as "index row\n" lines; a row itself contains no newline. Returns how many.
+std::size_t deliver_lines(const std::string& text, SweepSink& sink) {
+  std::size_t rows = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     const std::size_t space = text.find(' ', pos), end = text.find('\n', pos);
@@ -83,7 +84,9 @@ void deliver_lines(const std::string& text, SweepSink& sink) {
     const std::size_t index = std::stoull(text.substr(pos, space - pos));
     sink.deliver(index, text.substr(space + 1, end - space));
     pos = end + 1;
+    ++rows;
   }
+  return rows;
 }
 
 std::vector<std::uint64_t> receive_work() {
@@ -130,19 +133,28 @@ void serve_as_worker(const SweepRequest& req) {
 
 // Rank 0: its own threads take chunks from the sink like any rank, while the main thread
 // answers the other ranks (polling, so that it does not spin a core that workers need).
-void coordinate(World& world, const SweepRequest& req, SweepSink& sink,
-                const SweepRunOptions& options, std::size_t chunk) {
+std::vector<std::size_t> coordinate(World& world, const SweepRequest& req, SweepSink& sink,
+                                    const SweepRunOptions& options, std::size_t chunk) {
   std::mutex progress_mutex;
+  std::vector<std::size_t> computed(static_cast<std::size_t>(world.size()), 0);
   SweepRunOptions local = options;
   local.chunk = chunk;
   local.progress = [&](std::size_t done, std::size_t total) {
     std::lock_guard lock(progress_mutex);
     if (options.progress) options.progress(done, total);
   };
+  SweepRunOptions own_options = local;
+  own_options.progress = [&](std::size_t done, std::size_t total) {
+    {
+      std::lock_guard lock(progress_mutex);
+      ++computed[0];
+    }
+    local.progress(done, total);
+  };
   std::exception_ptr local_error;
   std::thread own([&] {
     try {
-      run_sweep_points(req, sink, local);
+      run_sweep_points(req, sink, own_options);
     } catch (...) {
       local_error = std::current_exception();
       sink.request_stop();
@@ -180,8 +192,12 @@ void coordinate(World& world, const SweepRequest& req, SweepSink& sink,
         --active;
         continue;
       }
-      deliver_lines(text, sink);
-      if (!text.empty()) local.progress(sink.done(), sink.total());
+      const std::size_t rows = deliver_lines(text, sink);
+      {
+        std::lock_guard lock(progress_mutex);
+        computed[static_cast<std::size_t>(status.MPI_SOURCE)] += rows;
+      }
+      if (rows) local.progress(sink.done(), sink.total());
       if (status.MPI_TAG == kFinal)
         --active;
       else if (!answer(status.MPI_SOURCE))
@@ -196,6 +212,7 @@ void coordinate(World& world, const SweepRequest& req, SweepSink& sink,
   own.join();
   if (!remote_error.empty()) throw std::runtime_error(remote_error);
   if (local_error) std::rethrow_exception(local_error);
+  return computed;
 }
 
 }  // namespace
@@ -227,18 +244,17 @@ void World::abort(int code) {
   std::exit(code);
 }
 
-void run_sweep_ranks(World& world, const SweepRequest& req, SweepSink* sink,
-                     const SweepRunOptions& options) {
+std::vector<std::size_t> run_sweep_ranks(World& world, const SweepRequest& req, SweepSink* sink,
+                                         const SweepRunOptions& options) {
   // Chunks of up to 1024 points (~0.1-1 s of work at 0.1-1 ms a point): messages and the
   // service loop's 1 ms polling cost little against them, even on a loaded machine, and
   // eight chunks per worker keep the slowest one from holding up the end of the sweep.
   const std::size_t workers = static_cast<std::size_t>(world.size()) *
                               static_cast<std::size_t>(worker_count(point_count(req), req.threads));
   const std::size_t chunk = std::clamp<std::size_t>(point_count(req) / (8 * workers), 1, 1024);
-  if (world.rank() == 0)
-    coordinate(world, req, *sink, options, chunk);
-  else
-    serve_as_worker(req);
+  if (world.rank() == 0) return coordinate(world, req, *sink, options, chunk);
+  serve_as_worker(req);
+  return {};
 }
 
 }  // namespace ivv::mpi

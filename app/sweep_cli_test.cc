@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -154,6 +155,14 @@ TEST(SweepCli, TwoMpiRanksWriteTheSameCsv) {
   const int rc = shell(cmd, scratch("mpi.err"));
   EXPECT_TRUE(rc == 0 || rc == 1) << slurp(scratch("mpi.err"));
   EXPECT_EQ(slurp(csv), expected);
+  // Both ranks computed a share (the CSV above merges their rows).
+  unsigned long rank0 = 0, rank1 = 0;
+  const std::string err = slurp(scratch("mpi.err"));
+  const auto at = err.find("2 MPI ranks computed");
+  ASSERT_NE(at, std::string::npos) << err;
+  ASSERT_EQ(std::sscanf(err.c_str() + at, "2 MPI ranks computed %lu, %lu", &rank0, &rank1), 2);
+  EXPECT_EQ(rank0 + rank1, kPoints);
+  EXPECT_GT(rank1, 0u);
   const auto sidecar = nlohmann::json::parse(slurp(scratch("mpi.json")));
   const auto& c = sidecar["counts"];
   EXPECT_EQ(c["separated"].get<std::size_t>() + c["captured"].get<std::size_t>() +
