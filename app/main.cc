@@ -243,18 +243,13 @@ int run_sweep_command(const ModelFlags& f, const SweepFlags& sf, const std::stri
   if (writer && !sf.quiet)
     run.progress = [&](std::size_t d, std::size_t t) { progress.update(d, t); };
   if (world) {
-    try {
-      const auto per_rank = mpi::run_sweep_ranks(*world, req, sink.get(), run);
-      if (writer) {
-        progress.finish();
-        std::cerr << "ivv sweep: " << world->size() << " MPI ranks computed";
-        for (std::size_t r = 0; r < per_rank.size(); ++r)
-          std::cerr << (r ? ", " : " ") << per_rank[r];
-        std::cerr << " points\n";
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "ivv: failed: " << e.what() << "\n";
-      world->abort(kExitFailure);
+    const auto per_rank = mpi::run_sweep_ranks(*world, req, sink.get(), run);
+    if (writer) {
+      progress.finish();
+      std::cerr << "ivv sweep: " << world->size() << " MPI ranks computed";
+      for (std::size_t r = 0; r < per_rank.size(); ++r)
+        std::cerr << (r ? ", " : " ") << per_rank[r];
+      std::cerr << " points\n";
     }
     if (!writer) return 0;
   } else {

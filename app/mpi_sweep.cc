@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <exception>
@@ -203,11 +204,13 @@ std::vector<std::size_t> coordinate(World& world, const SweepRequest& req, Sweep
       else if (!answer(status.MPI_SOURCE))
         waiting.push_back(status.MPI_SOURCE);
     }
-  } catch (...) {
-    // The sink could not be written: the other ranks cannot be told through the protocol.
+  } catch (const std::exception& e) {
+    // The output could not be written: the ranks still computing cannot be told through the
+    // protocol, so the job ends here (the journal keeps what was finished).
     sink.request_stop();
     own.join();
-    throw;
+    std::fprintf(stderr, "ivv: failed: %s\n", e.what());
+    world.abort(1);
   }
   own.join();
   if (!remote_error.empty()) throw std::runtime_error(remote_error);

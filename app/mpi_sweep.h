@@ -42,8 +42,9 @@ class World {
 
 // Runs the sweep across the ranks of `world`. On rank 0 `sink` receives every row (others:
 // nullptr). Returns when every point is done or (rank 0) a stop was requested and the chunks
-// in flight came back. A point that throws on any rank ends the sweep on rank 0 with
-// std::runtime_error naming the point. Returns (rank 0) the number of points each rank
+// in flight came back. A point that throws on any rank ends the sweep (every rank stops) and
+// rank 0 throws std::runtime_error naming the point. An output that cannot be written ends
+// the job with MPI_Abort. Returns (rank 0) the number of points each rank
 // computed in this run, so the balance can be seen; other ranks: empty.
 std::vector<std::size_t> run_sweep_ranks(World& world, const SweepRequest& request, SweepSink* sink,
                                          const SweepRunOptions& options);
