@@ -265,7 +265,8 @@ int run_sweep_command(const ModelFlags& f, const SweepFlags& sf, const std::stri
   if (!complete) {
     std::cerr << "ivv sweep: interrupted: " << sink->done() << " of " << sink->total()
               << " points done and kept in " << sink->journal_path().string()
-              << ". Resume with:\n  " << command
+              << ". Resume with:\n  "
+              << (world ? "mpirun -np " + std::to_string(world->size()) + " ... " : "") << command
               << (command.find(" --resume") == std::string::npos ? " --resume" : "") << "\n";
     const int sig = g_sweep_signal.load();
     return 128 + (sig ? sig : SIGINT);

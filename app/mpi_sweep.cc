@@ -76,18 +76,18 @@ void send_work(const std::vector<std::size_t>& indices, int dest) {
 
 // Rows come back as "index row\n" lines; a row itself contains no newline. Returns how many.
 std::size_t deliver_lines(const std::string& text, SweepSink& sink) {
-  std::size_t rows = 0;
+  std::vector<std::pair<std::size_t, std::string>> rows;
   std::size_t pos = 0;
   while (pos < text.size()) {
     const std::size_t space = text.find(' ', pos), end = text.find('\n', pos);
     if (space == std::string::npos || end == std::string::npos || space > end)
       throw std::runtime_error("a malformed row came back from an MPI rank");
-    const std::size_t index = std::stoull(text.substr(pos, space - pos));
-    sink.deliver(index, text.substr(space + 1, end - space));
+    rows.emplace_back(std::stoull(text.substr(pos, space - pos)),
+                      text.substr(space + 1, end - space));
     pos = end + 1;
-    ++rows;
   }
-  return rows;
+  sink.deliver(rows);
+  return rows.size();
 }
 
 std::vector<std::uint64_t> receive_work() {

@@ -323,14 +323,26 @@ std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
   return out;
 }
 
-void SweepSink::deliver(std::size_t index, const std::string& row) {
-  std::lock_guard lock(mutex_);
+void SweepSink::record(std::size_t index, const std::string& row) {
   if (index < next_write_ || pending_.count(index)) return;  // delivered before: keep the first
-  if (std::fprintf(journal_, "%zu %s", index, row.c_str()) < 0 || std::fflush(journal_) != 0)
+  if (std::fprintf(journal_, "%zu %s", index, row.c_str()) < 0)
     io_error(journal_path(), std::strerror(errno));
   count(row);
   ++delivered_;
   pending_.emplace(index, row);
+}
+
+void SweepSink::deliver(std::size_t index, const std::string& row) {
+  std::lock_guard lock(mutex_);
+  record(index, row);
+  if (std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
+  write_ready();
+}
+
+void SweepSink::deliver(const std::vector<std::pair<std::size_t, std::string>>& rows) {
+  std::lock_guard lock(mutex_);
+  for (const auto& [index, row] : rows) record(index, row);
+  if (std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
   write_ready();
 }
 

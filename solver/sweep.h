@@ -20,6 +20,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/simulate.h"
@@ -113,6 +114,8 @@ class SweepSink {
   // Records a finished point: appended to the journal (flushed), then written to the partial
   // CSV once every earlier point is written.
   void deliver(std::size_t index, const std::string& row);
+  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal.
+  void deliver(const std::vector<std::pair<std::size_t, std::string>>& rows);
 
   // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
@@ -122,7 +125,8 @@ class SweepSink {
   std::filesystem::path journal_path() const;
 
  private:
-  void write_ready();  // caller holds mutex_
+  void write_ready();                                      // caller holds mutex_
+  void record(std::size_t index, const std::string& row);  // caller holds mutex_
   void count(const std::string& row);
 
   const SweepRequest& request_;
