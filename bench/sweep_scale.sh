@@ -25,26 +25,29 @@ run() {
   local start end
   start=$(date +%s.%N)
   if [ "$ranks" = 0 ]; then
-    /usr/bin/time -f %M -o "$work/$label.rss.0" "$ivv" sweep "${grid[@]}" --threads "$threads" \
+    /usr/bin/time -f "%M %U %S" -o "$work/$label.rss.0" "$ivv" sweep "${grid[@]}" --threads "$threads" \
       --out "$csv" || [ $? = 1 ]
   else
     # Exit status 1 (some points failed, named in the CSV) is not an error here; mpirun takes
     # ~2 s to tear a job down after a non-zero status, which would pollute the timing.
     mpirun --oversubscribe --bind-to none -np "$ranks" --mca btl self,vader sh -c \
-      "/usr/bin/time -f %M -o $work/$label.rss.\$OMPI_COMM_WORLD_RANK $ivv sweep ${grid[*]} --threads $threads --out $csv; [ \$? -le 1 ]"
+      "/usr/bin/time -f \"%M %U %S\" -o $work/$label.rss.\$OMPI_COMM_WORLD_RANK $ivv sweep ${grid[*]} --threads $threads --out $csv; [ \$? -le 1 ]"
   fi
   end=$(date +%s.%N)
   local rss
-  rss=$(cat "$work/$label".rss.* | sort -n | tail -1)
+  rss=$(cat "$work/$label".rss.* | awk '{print $1}' | sort -n | tail -1)
+  local cpu
+  cpu=$(cat "$work/$label".rss.* | awk '{s += $2 + $3} END {print s}')
   local same="reference"
   if [ -f "$work/ref.csv" ]; then cmp -s "$csv" "$work/ref.csv" && same="identical" || same="DIFFERS"; fi
   [ -f "$work/ref.csv" ] || cp "$csv" "$work/ref.csv"
-  printf '%-22s %8.1f s %8.1f MB   csv %s\n' "$label" "$(echo "$end - $start" | bc)" \
-    "$(echo "$rss / 1024" | bc -l)" "$same"
+  printf '%-12s wall %7.1f s  cpu %7.1f s  peak RSS %6.1f MB  csv %s\n' "$label" \
+    "$(echo "$end - $start" | bc)" "$cpu" "$(echo "$rss / 1024" | bc -l)" "$same"
   echo "$end - $start" | bc > "$work/$label.wall"
 }
 
-echo "ivv sweep, $nv x $nz = $((nv * nz)) impacts, $(nproc) cores"
+echo "ivv sweep, $nv x $nz = $((nv * nz)) impacts, $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "(cpu: user + sys of every process; a wall speed-up needs idle cores, cpu shows the overhead)"
 run threads-1 0 1
 run threads-2 0 2
 run ranks-1 1 1
