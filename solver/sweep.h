@@ -91,8 +91,9 @@ struct SweepOutputOptions {
 // take() work and deliver() rows.
 class SweepSink {
  public:
-  // Opens (or, with resume, reopens) the journal and the partial CSV. Throws InputError
-  // naming --out or --resume (an existing journal without --resume, a journal of another sweep).
+  // Validates the request, then opens (or, with resume, reopens) the journal and the partial
+  // CSV. Throws InputError naming the flag: a bad grid, --out, or --resume (an existing
+  // journal without --resume, a journal of another sweep).
   SweepSink(const SweepRequest& request, SweepOutputOptions options);
   ~SweepSink();
   SweepSink(const SweepSink&) = delete;
