@@ -195,7 +195,7 @@ fs::path SweepSink::journal_path() const {
 }
 
 SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
-    : request_(request), options_(std::move(options)), total_(point_count(request)) {
+    : options_(std::move(options)), total_(point_count(request)) {
   validate(request);  // before any file is touched
   const fs::path csv = options_.csv;
   if (csv.empty()) throw InputError("--out", "must name a file");

@@ -130,7 +130,6 @@ class SweepSink {
   void record(std::size_t index, const std::string& row);  // caller holds mutex_
   void count(const std::string& row);
 
-  const SweepRequest& request_;
   SweepOutputOptions options_;
   std::size_t total_ = 0;
   std::size_t resumed_ = 0;
