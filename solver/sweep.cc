@@ -212,7 +212,13 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   std::snprintf(journal_header, sizeof journal_header, "ivv-sweep-journal 1 %016llx %zu",
                 static_cast<unsigned long long>(fnv1a(fingerprint)), total_);
 
-  const bool have_journal = fs::exists(journal, ec);
+  // A journal without a whole first line was cut off as it was created: it holds nothing.
+  bool have_journal = false;
+  if (fs::exists(journal, ec)) {
+    std::ifstream in(journal, std::ios::binary);
+    std::string line;
+    have_journal = std::getline(in, line) && !in.eof();
+  }
   if (have_journal && !options_.resume)
     throw InputError("--resume", journal.string() +
                                      " exists: an interrupted sweep left it. Add --resume to "
@@ -376,8 +382,8 @@ bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_com
   });
   std::fclose(journal_);
   journal_ = nullptr;
+  fs::remove(journal_path());  // first: a journal never outlives its partial CSV
   fs::remove(partial);
-  fs::remove(journal_path());
   return true;
 }
 
