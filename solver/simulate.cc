@@ -145,8 +145,32 @@ std::string IntegratorOptions::invalid_reason() const {
   return os.str();
 }
 
+namespace {
+// The law's own statement of whether it models yield (solver/laws/*.h).
+bool needs_yield_strength(LawKind k) {
+  switch (k) {
+    case LawKind::hertz:
+      return HertzLaw::needs_yield_strength;
+    case LawKind::elastoplastic:
+      return ElastoplasticLaw::needs_yield_strength;
+    case LawKind::linearized:
+      return LinearizedLaw::needs_yield_strength;
+    case LawKind::hunt_crossley:
+      return HuntCrossleyLaw::needs_yield_strength;
+  }
+  return true;
+}
+}  // namespace
+
 void validate(const SimulationRequest& req) {
   validate(req.scene);
+  if (needs_yield_strength(req.law) && !req.scene.yield_strength) {
+    throw InputError("target.yield_strength",
+                     "required by the " + std::string(to_string(req.law)) +
+                         " law (its yield deformation z_y = 0.68 S_y^2 pi^2 R*/E*^2); give "
+                         "yield_strength or shear_strength in [target], a finite number > 0 "
+                         "Pa, or use a law without yield (hertz, hunt-crossley)");
+  }
   const std::string why = req.options.invalid_reason();
   if (!why.empty()) throw InputError(why.substr(0, why.find(' ')), why.substr(why.find(' ') + 1));
   if (req.law == LawKind::hunt_crossley) {

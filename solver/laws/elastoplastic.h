@@ -14,12 +14,15 @@
 #include <optional>
 
 #include "solver/law.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct ElastoplasticLaw {
   static constexpr std::string_view name = "elastoplastic";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
+  static constexpr bool needs_yield_strength = true;
 
   double K_h = 0.0;  // [N/m^1.5]
   double z_y = 0.0;  // [m]

@@ -10,12 +10,15 @@
 #include <optional>
 
 #include "solver/law.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct HertzLaw {
   static constexpr std::string_view name = "hertz";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
+  static constexpr bool needs_yield_strength = false;
 
   double K_h = 0.0;  // [N/m^1.5]
 

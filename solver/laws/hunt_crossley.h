@@ -12,12 +12,15 @@
 #include <optional>
 
 #include "solver/law.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct HuntCrossleyLaw {
   static constexpr std::string_view name = "hunt-crossley";
   static constexpr bool rate_dependent = true;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
+  static constexpr bool needs_yield_strength = false;
 
   double K = 0.0;   // [N/m^1.5]
   double mu = 0.0;  // [s/m]

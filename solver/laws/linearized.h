@@ -15,12 +15,15 @@
 #include <sstream>
 
 #include "solver/law.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct LinearizedLaw {
   static constexpr std::string_view name = "linearized";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
+  static constexpr bool needs_yield_strength = true;
 
   double K_h = 0.0;  // [N/m^1.5]
   double K_y = 0.0;  // [N/m]
