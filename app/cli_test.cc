@@ -160,7 +160,11 @@ INSTANTIATE_TEST_SUITE_P(
             "target.yield_strength: required by the linearized law"},
         Bad{"zeta_without_yield", "simulate --scene chung-ooi-2-aluminium --law hertz --zeta 0.1",
             "damping.zeta"},
-        Bad{"unknown_shipped_scene", "simulate --scene no-such-scene", "--scene"}),
+        Bad{"unknown_shipped_scene", "simulate --scene no-such-scene", "--scene"},
+        Bad{"sweep_zeta_without_yield",
+            "sweep --scene chung-ooi-2-aluminium --law hertz --v0 0.1:1:2 --zeta 0,0.1 --out "
+            "/tmp/ivv_never.csv",
+            "--zeta"}),
     [](const auto& info) { return std::string(info.param.label); });
 
 TEST(Cli, BadSweepLeavesNoFile) {

@@ -32,6 +32,11 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   for (double z : req.zetas)
     if (!(std::isfinite(z) && z >= 0))
       throw InputError("--zeta", "damping ratios must be finite and >= 0 (0: no dashpot)");
+  for (double z : req.zetas)
+    if (z > 0 && !req.base.scene.yield_strength)
+      throw InputError("--zeta",
+                       "a damping ratio is defined with K_y and needs target.yield_strength; "
+                       "this scene has none: use --zeta 0 (no dashpot)");
 
   std::vector<SweepPoint> points;
   for (double v : req.velocities)
