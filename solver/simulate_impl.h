@@ -80,13 +80,23 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   return r;
 }
 
+// The scales a law normalises with: its own Law::scale_basis; a law that states none uses the
+// yield scales when the scene has a yield strength and the Hertz scales otherwise.
+template <class Law>
+ScaleBasis scale_basis_for(const DerivedParameters& p) {
+  if constexpr (requires { Law::scale_basis; })
+    return Law::scale_basis;
+  else
+    return p.has_yield() ? ScaleBasis::yield : ScaleBasis::hertz;
+}
+
 template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
 ImpactResult run_typed(const Law& law, const SimulationRequest& req, const DerivedParameters& p,
                        std::vector<TrajectoryPoint>* trajectory) {
   using System = ImpactSystem<Law, Dashpot, T>;
   // The law's own scales, so that a tolerance means the same for every law and no law depends
   // on a parameter it does not use (Hertz and Hunt-Crossley: no yield strength).
-  const Scales k = scales(req.scene, p, Law::scale_basis);
+  const Scales k = scales(req.scene, p, scale_basis_for<Law>(p));
   System sys;
   sys.law = law;
   sys.length = k.length;
