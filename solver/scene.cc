@@ -41,7 +41,7 @@ void validate_target(const Scene& s) {
   if (s.damping.kind == Damping::Kind::ratio && !s.yield_strength) {
     throw InputError("damping.zeta",
                      "a damping ratio is defined with K_y = 1.5 K_h sqrt(z_y) and needs "
-                     "target.yield_strength; give damping.c [N s/m] instead");
+                     "target.yield_strength; give damping.c [N s/m] (--c) instead");
   }
 }
 
