@@ -12,31 +12,19 @@
 #include <vector>
 
 #include "solver/integrator_options.h"
+#include "solver/integrators.h"
 #include "solver/result.h"
 #include "solver/scene.h"
 
 namespace ivv {
 
 enum class LawKind { hertz, elastoplastic, linearized, hunt_crossley };
-enum class IntegratorKind {
-  odeint_dopri5,
-  odeint_rosenbrock4,
-  rk4,
-  dp45,
-  gsl_rk8pd,
-  gsl_msbdf,
-  mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
-};
+// IntegratorKind, the table of integrator traits and parse_integrator: solver/integrators.h.
 
 std::span<const LawKind> all_laws();
-std::span<const IntegratorKind> all_integrators();
 std::string_view to_string(LawKind k);
-std::string_view to_string(IntegratorKind k);
-// One line on what each integrator is (for `ivv integrators`).
-std::string_view describe(IntegratorKind k);
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
 LawKind parse_law(const std::string& name, const std::string& field = "--law");
-IntegratorKind parse_integrator(const std::string& name, const std::string& field = "--integrator");
 
 // Hunt-Crossley parameters (used only by LawKind::hunt_crossley).
 struct HuntCrossleyParameters {

@@ -144,6 +144,8 @@ ImpactResult simulate_rk4(const SimulationRequest&, const DerivedParameters&,
                           std::vector<TrajectoryPoint>*);
 ImpactResult simulate_dp45(const SimulationRequest&, const DerivedParameters&,
                            std::vector<TrajectoryPoint>*);
+ImpactResult simulate_dop853(const SimulationRequest&, const DerivedParameters&,
+                             std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_rk8pd(const SimulationRequest&, const DerivedParameters&,
                                 std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_msbdf(const SimulationRequest&, const DerivedParameters&,

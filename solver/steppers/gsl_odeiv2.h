@@ -70,6 +70,13 @@ class GslStepper : public HermiteSteps<System> {
   using T = typename System::value_type;
   static constexpr std::string_view name = Method == GslMethod::rk8pd ? "gsl-rk8pd" : "gsl-msbdf";
   static constexpr int order = Method == GslMethod::rk8pd ? 8 : 5;
+  static constexpr bool implicit = Method == GslMethod::msbdf;
+  static constexpr bool fixed_step = false;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      Method == GslMethod::rk8pd
+          ? "GSL odeiv2 Runge-Kutta Prince-Dormand 8(9), Hermite interpolant"
+          : "GSL odeiv2 multistep BDF (orders 1-5) with Jacobian: stiff scenes";
   static constexpr std::size_t N = System::N;
 
   explicit GslStepper(const IntegratorOptions& opt)

@@ -20,6 +20,11 @@ class OdeintDopri5Stepper {
   static constexpr std::string_view name = "odeint-dopri5";
   static constexpr bool dense_output = true;
   static constexpr int order = 5;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = false;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "Boost.Odeint Dormand-Prince 5(4), controlled, dense output (default)";
 
   explicit OdeintDopri5Stepper(const IntegratorOptions& opt)
       : stepper_(boost::numeric::odeint::make_dense_output(
