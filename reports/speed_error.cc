@@ -174,10 +174,7 @@ SpeedSection speed_section(const SectionOptions& options) {
 
   options.say("speed: hard cases, every double-precision integrator");
   {
-    const std::vector<IntegratorKind> integrators = {
-        IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4,
-        IntegratorKind::rk4,           IntegratorKind::dp45,
-        IntegratorKind::gsl_rk8pd,     IntegratorKind::gsl_msbdf};
+    const std::vector<IntegratorKind> integrators = production_integrators();
     const double nan = std::numeric_limits<double>::quiet_NaN();
     auto undamped_e = [](const Scene& s) {
       return oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;

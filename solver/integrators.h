@@ -11,6 +11,10 @@
 //   dense_output  the stepper has its own continuous extension; otherwise the event locator
 //                 works on a cubic Hermite interpolant and refines by re-stepping
 //   fixed_step    no error control: accuracy is set by IntegratorOptions::dt, not rtol
+//   fixed_step_mode  runs at the fixed step IntegratorOptions::dt with its error control off
+//                 when IntegratorOptions::fixed_step is set (convergence studies); false for
+//                 the implicit steppers, whose controllers (Rosenbrock's, the variable-order
+//                 BDF's) are not separable from the method in the libraries
 //   reference     the 50-digit yardstick, not a production integrator (slow)
 #pragma once
 
@@ -40,6 +44,7 @@ struct IntegratorTraits {
   bool implicit = false;
   bool dense_output = false;
   bool fixed_step = false;
+  bool fixed_step_mode = false;
   bool reference = false;
 };
 

@@ -165,6 +165,7 @@ class Dop853Stepper {
   static constexpr int order = 8;
   static constexpr bool implicit = false;
   static constexpr bool fixed_step = false;  // adaptive; IntegratorOptions::fixed_step turns it off
+  static constexpr bool fixed_step_mode = true;
   static constexpr bool reference = false;
   static constexpr std::string_view description =
       "hand-written Dormand-Prince 8(5,3) (DOP853) from Hairer's tableau, 7th-order dense output: "

@@ -52,6 +52,7 @@ class Dp45Stepper {
   static constexpr int order = 5;
   static constexpr bool implicit = false;
   static constexpr bool fixed_step = false;  // adaptive; IntegratorOptions::fixed_step turns it off
+  static constexpr bool fixed_step_mode = true;
   static constexpr bool reference = false;
   static constexpr std::string_view description =
       "hand-written Dormand-Prince 5(4) from its tableau, own dense output";

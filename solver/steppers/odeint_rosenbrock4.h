@@ -27,6 +27,7 @@ class OdeintRosenbrock4Stepper {
   static constexpr int order = 4;
   static constexpr bool implicit = true;
   static constexpr bool fixed_step = false;
+  static constexpr bool fixed_step_mode = false;
   static constexpr bool reference = false;
   static constexpr std::string_view description =
       "Boost.Odeint Rosenbrock 4(3), linearly implicit, dense output: stiff scenes";
