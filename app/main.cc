@@ -15,6 +15,7 @@
 #include "app/cli_args.h"
 #include "app/result_json.h"
 #include "bench/benchmarks.h"
+#include "bench/speed_bench.h"
 #include "reports/report.h"
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
@@ -419,7 +420,9 @@ int main(int argc, char** argv) {
   report->add_flag("-q,--quiet", report_quiet, "no progress lines on stderr");
 
   auto* bench = app.add_subcommand(
-      "bench", "Google Benchmark timings of one impact per integrator (flags: --benchmark_*)");
+      "bench",
+      "speed against error, peers and targets: ivv bench [--json] [--quick]; "
+      "Google Benchmark timings: ivv bench --gbench [--benchmark_*]");
   bench->allow_extras();
   bench->prefix_command();
 
@@ -455,10 +458,27 @@ int main(int argc, char** argv) {
     if (*verify) return run_verify(verify_filter, verify_out, verify_threads, verify_list);
     if (*bench) {
       std::vector<std::string> extras = bench->remaining();
-      std::vector<char*> args{argv[0]};
-      for (auto& e : extras) args.push_back(e.data());
-      int n = static_cast<int>(args.size());
-      return bench::run_benchmarks(n, args.data());
+      bool gbench = false, bench_json = false, bench_quick = false;
+      for (const auto& e : extras) {
+        gbench = gbench || e == "--gbench" || e.rfind("--benchmark_", 0) == 0;
+        bench_json = bench_json || e == "--json";
+        bench_quick = bench_quick || e == "--quick";
+      }
+      if (gbench) {
+        std::vector<char*> args{argv[0]};
+        for (auto& e : extras)
+          if (e != "--gbench") args.push_back(e.data());
+        int n = static_cast<int>(args.size());
+        return bench::run_benchmarks(n, args.data());
+      }
+      for (const auto& e : extras)
+        if (e != "--json" && e != "--quick")
+          throw InputError(e, "unknown flag; ivv bench takes --json, --quick, or --gbench "
+                              "[--benchmark_*]");
+      const bench::BenchReport rep = bench::run_bench(
+          {bench_quick}, [](const std::string& line) { std::cerr << line << "\n"; });
+      std::cout << (bench_json ? bench::to_json(rep) + "\n" : bench::to_text(rep));
+      return 0;
     }
     if (*laws) {
       for (LawKind k : all_laws()) std::cout << to_string(k) << "\n";
