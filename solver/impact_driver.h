@@ -120,6 +120,9 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
   T tau = 0;
   sys.branch = Branch<T>{};
   stepper.start(sys, tau, x);
+  // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force and
+  // separation or capture, with room for a law with more segments
+  run.events.reserve(8);
   run.events.push_back({EventKind::onset, tau, x, sys.force(x)});
   if (observer) (*observer)(0.0, x, sys);
   bool peak_fired = false;

@@ -77,6 +77,9 @@ LawKind parse_law(const std::string& name, const std::string& field) {
 }
 
 std::string IntegratorOptions::invalid_reason() const {
+  const bool valid = rtol >= 1e-15 && rtol <= 1e-2 && atol > 0 && atol <= 1e-2 && dt >= 0 &&
+                     dt <= 0.5 && std::isfinite(dt) && max_steps > 0;
+  if (valid) return {};  // no stream on the hot path (validated once per impact)
   std::ostringstream os;
   if (!(rtol >= 1e-15 && rtol <= 1e-2))
     os << "--rtol must lie in [1e-15, 1e-2] (got " << rtol << ")";

@@ -28,6 +28,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.reason = run.reason;
   r.steps = run.steps;
   r.rhs_evaluations = sys.rhs_evaluations;
+  r.events.reserve(run.events.size());
   for (const auto& ev : run.events) {
     r.events.push_back(
         {ev.kind, d(ev.tau) * Ts, d(sys.z(ev.x)) * L, d(ev.x[System::A]) * L, d(ev.force) * Fs});
