@@ -312,8 +312,8 @@ std::string ratio_table_html(const SpeedSection& s) {
   return "<p>Paper scene, v<sub>0</sub> = 1 m/s, ζ = 0.1, elastoplastic: for each error level the "
          "fastest run of any ivv integrator whose relative error of e is within it, and the "
          "fastest run of each peer (same scene, same mp50 reference, same machine and run); "
-         "ratio = peer time / ivv time (above 1: ivv is faster). A blank means no run reached "
-         "the level.</p>\n" +
+         "ratio = peer time / ivv time (above 1: ivv is faster). NaN: no run reached the "
+         "level.</p>\n" +
          table(head, rows);
 }
 
