@@ -20,6 +20,7 @@
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
+#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/registry.h"
@@ -57,7 +58,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   }
   cmd.add_option("--law", f.law, "contact law: hertz, elastoplastic, linearized, hunt-crossley")
       ->capture_default_str();
-  cmd.add_option("--integrator", f.integrator, "integrator (see `ivv integrators`)")
+  cmd.add_option("--integrator", f.integrator,
+                 "integrator (see `ivv integrators`), or auto: chosen by stiffness")
       ->capture_default_str();
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
@@ -90,7 +92,8 @@ SimulationRequest build_request(const ModelFlags& f) {
   }
   if (f.no_dashpot) req.scene.damping = Damping::none();
   req.law = parse_law(f.law);
-  req.integrator = parse_integrator(f.integrator);
+  // auto: chosen below, once the scene, law and tolerances are known
+  req.integrator = f.integrator == "auto" ? IntegratorKind::dop853 : parse_integrator(f.integrator);
   if (req.law == LawKind::hunt_crossley && (f.zeta || f.c)) {
     throw InputError(f.zeta ? "--zeta" : "--c",
                      "hunt-crossley carries its own damping (--hc-mu) and runs without the "
@@ -107,6 +110,7 @@ SimulationRequest build_request(const ModelFlags& f) {
   req.hunt_crossley.K = f.hc_k;
   req.hunt_crossley.mu = f.hc_mu;
   validate(req);
+  if (f.integrator == "auto") req.integrator = choose_integrator(req).integrator;
   return req;
 }
 
@@ -155,7 +159,15 @@ int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_p
     });
   }
   if (json) {
-    std::cout << simulation_json(req, r).dump(2) << std::endl;
+    nlohmann::json j = simulation_json(req, r);
+    if (f.integrator == "auto") {
+      const IntegratorChoice c = choose_integrator(req);
+      j["model_choice"] = {{"law", std::string(to_string(req.law))},
+                           {"integrator", std::string(to_string(c.integrator))},
+                           {"reasons", c.reasons},
+                           {"estimated_error", c.estimated_error}};
+    }
+    std::cout << j.dump(2) << std::endl;
   } else {
     print_summary(std::cout, req, r);
   }
@@ -419,10 +431,10 @@ int main(int argc, char** argv) {
   report->add_flag("--quick", report_opt.quick, "fewer sweep and timing points (smoke runs)");
   report->add_flag("-q,--quiet", report_quiet, "no progress lines on stderr");
 
-  auto* bench = app.add_subcommand(
-      "bench",
-      "speed against error, peers and targets: ivv bench [--json] [--quick]; "
-      "Google Benchmark timings: ivv bench --gbench [--benchmark_*]");
+  auto* bench =
+      app.add_subcommand("bench",
+                         "speed against error, peers and targets: ivv bench [--json] [--quick]; "
+                         "Google Benchmark timings: ivv bench --gbench [--benchmark_*]");
   bench->allow_extras();
   bench->prefix_command();
 
@@ -442,9 +454,13 @@ int main(int argc, char** argv) {
     if (*sweep) return run_sweep_command(sweep_flags, v0_grid, log, zeta_grid, out_path, threads);
     if (*show) return run_scene_show(show_scene, show_json);
     if (*integrators) {
-      for (IntegratorKind k : all_integrators()) {
-        std::cout << to_string(k);
-        if (verbose) std::cout << "\t" << describe(k);
+      for (const IntegratorTraits& t : integrator_table()) {
+        std::cout << t.name;
+        if (verbose)
+          std::cout << "\torder " << t.order << (t.implicit ? ", implicit" : ", explicit")
+                    << (t.dense_output ? ", dense output" : ", Hermite interpolant")
+                    << (t.fixed_step ? ", fixed step" : ", adaptive")
+                    << (t.reference ? ", reference" : "") << "\t" << t.description;
         std::cout << "\n";
       }
       return 0;
@@ -473,8 +489,9 @@ int main(int argc, char** argv) {
       }
       for (const auto& e : extras)
         if (e != "--json" && e != "--quick")
-          throw InputError(e, "unknown flag; ivv bench takes --json, --quick, or --gbench "
-                              "[--benchmark_*]");
+          throw InputError(e,
+                           "unknown flag; ivv bench takes --json, --quick, or --gbench "
+                           "[--benchmark_*]");
       const bench::BenchReport rep = bench::run_bench(
           {bench_quick}, [](const std::string& line) { std::cerr << line << "\n"; });
       std::cout << (bench_json ? bench::to_json(rep) + "\n" : bench::to_text(rep));

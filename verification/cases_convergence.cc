@@ -18,8 +18,10 @@
 // dp45 order 5; with the event noticed only at the end of a step, z_m is taken short by O(h^2)
 // and the order collapses to about 2 - which is why the shared locator exists.
 #include <cmath>
+#include <tuple>
 
 #include "bench/work_precision.h"
+#include "solver/integrator_choice.h"
 #include "verification/cases.h"
 #include "verification/support.h"
 
@@ -116,9 +118,74 @@ Outcome order_case(IntegratorKind k, bool locate, double expected) {
   return o;
 }
 
+// --integrator auto (solver/integrator_choice.h) on a grid: the chosen integrator's errors in
+// e, F_max, z_max and t_f must stay within the estimated error it states, and the choice must
+// be explicit below the stiffness threshold and implicit above it.
+Outcome auto_choice_case(double rtol) {
+  // the explicit choices against 10 rtol; the stiff scene's implicit choice is checked
+  // against its own estimate (100 rtol) as a separate failure below
+  WorstError w;
+  for (double v0 : {0.3, 1.0, 5.0})
+    for (double zeta : {0.0, 0.1, 0.3}) {
+      SimulationRequest req =
+          request(with(paper_scene(), v0, zeta), LawKind::elastoplastic, IntegratorKind::dop853);
+      req.options.rtol = req.options.atol = rtol;
+      const IntegratorChoice c = choose_integrator(req);
+      req.integrator = c.integrator;
+      const std::string where = "v0=" + fmt(v0) + " zeta=" + fmt(zeta) + " (" +
+                                std::string(to_string(c.integrator)) + ")";
+      if (traits(c.integrator).implicit) w.fail(where + ": implicit chosen on a non-stiff scene");
+      const ImpactResult r = simulate(req);
+      const ImpactResult& ref = reference(req);
+      if (r.status != ref.status) {
+        w.fail(where + ": status " + std::string(to_string(r.status)) + " " + r.reason);
+        continue;
+      }
+      w.add_cor(r.e, ref.e, where + " e");
+      w.add(r.F_max, ref.F_max, where + " F_max");
+      w.add(r.z_max, ref.z_max, where + " z_max");
+      w.add(r.t_contact, ref.t_contact, where + " t_contact");
+    }
+  // zeta = 100 (S ~ 500): implicit; against dop853 at 1e-13, whose stability-limited steps keep
+  // it far inside its tolerance (mp50 takes minutes here; see bench/speed_bench.h)
+  SimulationRequest stiff =
+      request(with(paper_scene(), 1.0, 100.0), LawKind::elastoplastic, IntegratorKind::dop853);
+  stiff.options.rtol = stiff.options.atol = 1e-13;
+  const ImpactResult ref = simulate(stiff);
+  stiff.options.rtol = stiff.options.atol = rtol;
+  const IntegratorChoice c = choose_integrator(stiff);
+  stiff.integrator = c.integrator;
+  if (!traits(c.integrator).implicit) w.fail("zeta=100: explicit chosen on a stiff scene");
+  const ImpactResult r = simulate(stiff);
+  if (r.status != ref.status) {
+    w.fail("zeta=100: status " + std::string(to_string(r.status)) + " " + r.reason);
+  } else {
+    for (auto [v, x, what] :
+         {std::tuple{r.F_max, ref.F_max, "F_max"}, std::tuple{r.z_max, ref.z_max, "z_max"}}) {
+      const double err = relative_error(v, x);
+      if (!(err <= c.estimated_error))
+        w.fail("zeta=100 " + std::string(what) + ": error " + fmt(err, 3) +
+               " above the stated estimate " + fmt(c.estimated_error, 3));
+    }
+  }
+  return worst_case(w, kAutoErrorFactorExplicit * rtol,
+                    "e, F_max, z_max, t_f of the chosen integrator against mp50 (zeta = 100: "
+                    "against dop853 at 1e-13), on v0 0.3-5 m/s x zeta 0-0.3 and zeta = 100");
+}
+
 }  // namespace
 
 void register_convergence_cases(Registry& reg) {
+  // The automatic integrator choice is checked here, beside the orders it relies on.
+  for (double rtol : {1e-6, 1e-8, 1e-10}) {
+    reg.add({"autochoice.integrator.rtol-" + fmt(rtol),
+             "--integrator auto at rtol " + fmt(rtol) +
+                 ": the chosen integrator stays within its estimated error",
+             Tier::cross_implementation,
+             "the choice states estimated_error = 10 rtol for dop853, 100 rtol for "
+             "rosenbrock4 (solver/integrator_choice.h); it must hold",
+             false, [rtol] { return auto_choice_case(rtol); }});
+  }
   for (IntegratorKind k : production_integrators()) {
     const IntegratorTraits& t = traits(k);
     if (!t.fixed_step_mode) continue;
