@@ -299,11 +299,13 @@ BenchReport run_bench(const BenchOptions& options,
     const double secs =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() *
         (200.0 * 50.0) / (nv * nz);
-    rep.targets.push_back(
-        target("200 x 50 COR map at rtol 1e-8, one thread", 0.1, "s", secs,
-               std::string(options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "") +
-                   "full model (elastoplastic, dop853; --model auto is not on this branch), " +
-                   std::to_string(failed) + " failed points"));
+    rep.targets.push_back(target(
+        "200 x 50 COR map at rtol 1e-8, one thread", 0.1, "s", secs,
+        std::string(options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "") +
+            "full model (elastoplastic, dop853; --model auto is not on this branch), " +
+            std::to_string(failed) +
+            " failed points (a failed point counts as a miss: the target asks for every point)"));
+    if (failed > 0) rep.targets.back().met = false;
     rep.targets.push_back(target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio",
                                  kNaN,
                                  "not measured here: the threaded sweep is solver/sweep.* "
