@@ -196,7 +196,7 @@ BenchReport run_bench(const BenchOptions& options,
         SimulationRequest base;
         base.scene = paper_at(v0, zeta);
         base.law = law;
-        if (law == LawKind::hunt_crossley) base.hunt_crossley.mu = 1.0 / v0;
+        if (law == LawKind::hunt_crossley) base.parameters["mu"] = 1.0 / v0;
         SimulationRequest rq = base;
         rq.integrator = IntegratorKind::mp50;
         rq.options.reference_tolerance = options.quick ? 1e-20 : 1e-26;

@@ -10,8 +10,11 @@
 namespace ivv {
 namespace {
 
-constexpr std::array kLaws = {LawKind::hertz, LawKind::elastoplastic, LawKind::linearized,
-                              LawKind::hunt_crossley};
+constexpr std::array kLaws = [] {
+  std::array<LawKind, static_cast<std::size_t>(LawKind::expression)> kinds{};
+  for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<LawKind>(i);
+  return kinds;
+}();
 template <class Kind, std::size_t N>
 std::string name_list(const std::array<Kind, N>& kinds) {
   std::string out;
@@ -23,19 +26,6 @@ std::string name_list(const std::array<Kind, N>& kinds) {
 
 std::span<const LawKind> all_laws() {
   return kLaws;
-}
-std::string_view to_string(LawKind k) {
-  switch (k) {
-    case LawKind::hertz:
-      return "hertz";
-    case LawKind::elastoplastic:
-      return "elastoplastic";
-    case LawKind::linearized:
-      return "linearized";
-    case LawKind::hunt_crossley:
-      return "hunt-crossley";
-  }
-  return "?";
 }
 
 std::string_view to_string(ImpactStatus s) {
@@ -70,12 +60,6 @@ std::string_view to_string(EventKind k) {
   return "?";
 }
 
-LawKind parse_law(const std::string& name, const std::string& field) {
-  for (LawKind k : kLaws)
-    if (name == to_string(k)) return k;
-  throw InputError(field, "unknown contact law '" + name + "'; valid names: " + name_list(kLaws));
-}
-
 std::string IntegratorOptions::invalid_reason() const {
   const bool valid = rtol >= 1e-15 && rtol <= 1e-2 && atol > 0 && atol <= 1e-2 && dt >= 0 &&
                      dt <= 0.5 && std::isfinite(dt) && max_steps > 0;
@@ -92,17 +76,39 @@ std::string IntegratorOptions::invalid_reason() const {
   return os.str();
 }
 
+void validate(const IntegratorOptions& options) {
+  const std::string why = options.invalid_reason();
+  if (!why.empty()) throw InputError(why.substr(0, why.find(' ')), why.substr(why.find(' ') + 1));
+}
+
 void validate(const SimulationRequest& req) {
   validate(req.scene);
-  const std::string why = req.options.invalid_reason();
-  if (!why.empty()) throw InputError(why.substr(0, why.find(' ')), why.substr(why.find(' ') + 1));
-  if (req.law == LawKind::hunt_crossley) {
-    if (req.hunt_crossley.K && !(std::isfinite(*req.hunt_crossley.K) && *req.hunt_crossley.K > 0))
-      throw InputError("--hc-k", "must be a finite number > 0 N/m^1.5");
-    if (!(std::isfinite(req.hunt_crossley.mu) && req.hunt_crossley.mu >= 0))
-      throw InputError("--hc-mu", "must be a finite number >= 0 s/m");
+  validate(req.options);
+  validate_parameters(req.law, req.parameters);
+  const LawInfo& law = law_info(req.law);
+  if (req.law != LawKind::expression && !req.expression.force.empty())
+    throw InputError("--force", "an expression law replaces --law " + std::string(law.name) +
+                                    "; give one or the other");
+  if (req.law == LawKind::expression && req.expression.force.empty())
+    throw InputError("--force", "the expression law needs a force expression");
+  bool rate_dependent = law.rate_dependent;
+  if (req.law == LawKind::expression)
+    rate_dependent = detail::compile_expression_law(req, derive(req.scene))->uses_rate();
+  if (rate_dependent && req.scene.damping.kind != Damping::Kind::none) {
+    throw InputError(
+        req.scene.damping.kind == Damping::Kind::ratio ? "--zeta" : "--c",
+        std::string(req.law == LawKind::expression ? "an expression that uses zdot"
+                                                   : "the " + std::string(law.name) + " law") +
+            " carries its own damping and runs without the series dashpot");
   }
 }
+
+namespace detail {
+std::shared_ptr<const CompiledExpressions> compile_expression_law(const SimulationRequest& req,
+                                                                  const DerivedParameters& p) {
+  return std::make_shared<const CompiledExpressions>(req.expression, req.parameters, req.scene, p);
+}
+}  // namespace detail
 
 ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>* trajectory) {
   validate(req);
