@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include "app/cli_args.h"
@@ -19,6 +20,7 @@
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
+#include "solver/integrator_accuracy.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/registry.h"
@@ -29,20 +31,26 @@ namespace {
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
-// Options shared by simulate and sweep.
+// Options shared by simulate and sweep. Numeric values are kept as typed and parsed by
+// app/cli_args.h, so that '', '1e3x' or a count out of range is an InputError naming the flag.
 struct ModelFlags {
   std::string scene;
-  std::optional<double> v0;
-  std::optional<double> zeta;
-  std::optional<double> c;
+  std::optional<std::string> v0;
+  std::optional<std::string> zeta;
+  std::optional<std::string> c;
   bool no_dashpot = false;
   std::string law = "elastoplastic";
   std::string integrator = "odeint-dopri5";
-  std::optional<double> rtol, atol, dt;
-  std::optional<double> hc_k;
-  double hc_mu = 0.0;
-  long max_steps = IntegratorOptions{}.max_steps;
+  std::optional<std::string> rtol, atol, dt;
+  std::optional<std::string> hc_k;
+  std::optional<std::string> hc_mu;
+  std::optional<std::string> max_steps;
 };
+
+std::optional<double> number(const std::optional<std::string>& text, const std::string& field) {
+  if (!text) return std::nullopt;
+  return parse_number(*text, field);
+}
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping) {
   cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)")->required();
@@ -62,16 +70,23 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
   cmd.add_option("--dt", f.dt,
                  "fixed step of rk4 in normalised time tau = omega0 t (default 1e-3)");
-  cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")
-      ->capture_default_str();
+  cmd.add_option("--max-steps", f.max_steps,
+                 "give up after this many steps (default " +
+                     std::to_string(IntegratorOptions{}.max_steps) + ")");
   cmd.add_option("--hc-k", f.hc_k,
                  "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
-  cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m]")->capture_default_str();
+  cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m] (default 0)");
 }
 
-SimulationRequest build_request(const ModelFlags& f) {
+SimulationRequest build_request(const ModelFlags& flags) {
+  struct {
+    std::optional<double> v0, zeta, c, rtol, atol, dt, hc_k, hc_mu;
+    bool no_dashpot;
+  } f = {number(flags.v0, "--v0"),     number(flags.zeta, "--zeta"), number(flags.c, "--c"),
+         number(flags.rtol, "--rtol"), number(flags.atol, "--atol"), number(flags.dt, "--dt"),
+         number(flags.hc_k, "--hc-k"), number(flags.hc_mu, "--hc-mu"), flags.no_dashpot};
   SimulationRequest req;
-  req.scene = load_scene(f.scene);
+  req.scene = load_scene(flags.scene);
   if (f.v0) {
     if (!(std::isfinite(*f.v0) && *f.v0 > 0))
       throw InputError("--v0", "must be a finite number > 0 m/s");
@@ -88,8 +103,8 @@ SimulationRequest build_request(const ModelFlags& f) {
     req.scene.damping = Damping::coefficient(*f.c);
   }
   if (f.no_dashpot) req.scene.damping = Damping::none();
-  req.law = parse_law(f.law);
-  req.integrator = parse_integrator(f.integrator);
+  req.law = parse_law(flags.law);
+  req.integrator = parse_integrator(flags.integrator);
   if (req.law == LawKind::hunt_crossley && (f.zeta || f.c)) {
     throw InputError(f.zeta ? "--zeta" : "--c",
                      "hunt-crossley carries its own damping (--hc-mu) and runs without the "
@@ -102,10 +117,27 @@ SimulationRequest build_request(const ModelFlags& f) {
     if (!(*f.dt > 0)) throw InputError("--dt", "must be > 0 (normalised time)");
     req.options.dt = *f.dt;
   }
-  req.options.max_steps = f.max_steps;
+  if (flags.max_steps)
+    req.options.max_steps = parse_count(*flags.max_steps, "--max-steps", 1,
+                                        std::numeric_limits<long>::max());
+  if (req.law != LawKind::hunt_crossley && (f.hc_k || f.hc_mu)) {
+    throw InputError(f.hc_k ? "--hc-k" : "--hc-mu",
+                     "applies only to --law hunt-crossley (the law chosen, " +
+                         std::string(to_string(req.law)) + ", has no such parameter)");
+  }
   req.hunt_crossley.K = f.hc_k;
-  req.hunt_crossley.mu = f.hc_mu;
-  validate(req);
+  req.hunt_crossley.mu = f.hc_mu.value_or(0.0);
+  try {
+    validate(req);
+  } catch (const InputError& e) {
+    // a scene value the user overrode on the command line is named by its flag
+    const std::string prefix = e.field() + ": ";
+    const std::string message = std::string(e.what()).substr(prefix.size());
+    if (e.field() == "impact.velocity" && f.v0) throw InputError("--v0", message);
+    if (e.field() == "damping.zeta" && f.zeta) throw InputError("--zeta", message);
+    if (e.field() == "damping.c" && f.c) throw InputError("--c", message);
+    throw;
+  }
   return req;
 }
 
@@ -124,8 +156,9 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << "\n";
   if (!r.ok()) return;
   out << std::setprecision(8);
-  out << "  COR          e = " << r.e << "  (Poisson " << r.e_poisson << ", energetic "
-      << r.e_energetic << ")\n";
+  out << "  COR          e = " << r.e;
+  if (r.status == ImpactStatus::captured) out << " (captured: e <= " << r.e_bound << ")";
+  out << "  (Poisson " << r.e_poisson << ", energetic " << r.e_energetic << ")\n";
   out << std::setprecision(6);
   out << "  peak force   F_max = " << r.F_max << " N at t = " << r.t_F_max * 1e3 << " ms\n";
   out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
@@ -142,6 +175,7 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
 
 int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_path) {
   const SimulationRequest req = build_request(f);
+  if (!trajectory_path.empty()) resolve_output_path(trajectory_path, "--trajectory");
   std::vector<TrajectoryPoint> trajectory;
   const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
   if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
@@ -151,7 +185,7 @@ int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_p
       for (const auto& p : trajectory)
         out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
             << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
-    });
+    }, "--trajectory");
   }
   if (json) {
     std::cout << simulation_json(req, r).dump(2) << std::endl;
@@ -174,6 +208,7 @@ int run_sweep_command(const ModelFlags& f, const std::string& v0_grid, bool log,
   req.zetas = parse_grid(zeta_grid, "--zeta", false);
   if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
   req.threads = threads;
+  resolve_output_path(out_path, "--out", true);
   const auto start = std::chrono::steady_clock::now();
   bool shown = false;
   req.progress = [&](std::size_t done, std::size_t total) {
@@ -201,7 +236,7 @@ int run_sweep_command(const ModelFlags& f, const std::string& v0_grid, bool log,
           << r.alpha_max << ',' << r.z_perm << ',' << r.energy.residual << ',' << r.steps << ','
           << to_string(r.status) << '\n';
     }
-  });
+  }, "--out", true);
   std::cerr << "ivv sweep: wrote " << points.size() << " impacts to " << out_path;
   if (failed) std::cerr << " (" << failed << " failed: see the status column)";
   std::cerr << "\n";
@@ -276,6 +311,7 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
   }
   if (out_path.empty()) throw InputError("--out", "required (the results JSON file)");
   if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  resolve_output_path(out_path, "--out", true);
   const bool tty = isatty(fileno(stderr));
   const auto records =
       run_cases(cases, threads, [tty](std::size_t done, std::size_t total, const Case& c) {
@@ -310,8 +346,10 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
                             {"slow", r.c->slow},
                             {"seconds", r.seconds}});
   }
-  write_file_atomically(out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; });
-  std::cout << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
+  write_file_atomically(out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; }, "--out",
+                        true);
+  (out_path == "-" ? std::cerr : std::cout)
+      << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
   return failed ? kExitFailure : 0;
 }
 
@@ -441,7 +479,7 @@ int main(int argc, char** argv) {
     if (*integrators) {
       for (IntegratorKind k : all_integrators()) {
         std::cout << to_string(k);
-        if (verbose) std::cout << "\t" << describe(k);
+        if (verbose) std::cout << "\t" << describe(k) << "\n\t  accuracy: " << accuracy_statement(k);
         std::cout << "\n";
       }
       return 0;
