@@ -173,9 +173,11 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
 }
 
-int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_path) {
+int run_simulate(const ModelFlags& f, bool json, const std::optional<std::string>& trajectory_flag) {
   const SimulationRequest req = build_request(f);
-  if (!trajectory_path.empty()) resolve_output_path(trajectory_path, "--trajectory");
+  // given but empty is an error (resolve_output_path says so), not "no trajectory"
+  if (trajectory_flag) resolve_output_path(*trajectory_flag, "--trajectory");
+  const std::string trajectory_path = trajectory_flag.value_or("");
   std::vector<TrajectoryPoint> trajectory;
   const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
   if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
@@ -393,7 +395,7 @@ int main(int argc, char** argv) {
 
   ModelFlags sim_flags;
   bool json = false;
-  std::string trajectory;
+  std::optional<std::string> trajectory;
   auto* sim =
       app.add_subcommand("simulate", "run one impact and print COR, peak force, contact time");
   add_model_flags(*sim, sim_flags, true);
