@@ -183,7 +183,7 @@ TEST(Issue10, UnconvergedHermiteRefinementIsNamed) {
   OneState::state_type xe{};
   auto value = [](EventKind, const OneState::state_type& x) { return x[0]; };
   const auto r = refine_on_restep(stepper, sys, EventKind::yield, Direction::rising, 0.5, xe,
-                                  value, LocatorOptions{});
+                                  value, IntegratorOptions{});
   EXPECT_NE(r.failure.find("did not converge"), std::string::npos) << r.failure;
   EXPECT_NE(r.failure.find("yield"), std::string::npos) << r.failure;
 }

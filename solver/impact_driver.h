@@ -93,16 +93,34 @@ struct Refinement {
 // Refines an event time found on a Hermite interpolant: re-step exactly to the estimate,
 // keep the sub-bracket that still contains the crossing, re-interpolate on it, repeat until
 // the estimate moves by no more than a few ulps (1e-14 in double, 1e-48 in the 50-digit
-// reference) or the bracket is that narrow. Not converged after kMaxRefinements re-steps, or
-// a re-step that fails: `failure` says so.
+// reference), or the bracket is that narrow, or the move changes the event state by less
+// than one step's error tolerance (|dtau| max|x'| <= atol + rtol max|x|; the reference's
+// tolerance for the 50-digit type): a grazing event, whose function barely changes sign, is
+// ill-conditioned in time but not in state, and its time cannot be pinned to ulps. Not
+// converged after kMaxRefinements re-steps, or a re-step that fails: `failure` says so.
 template <class Stepper, class System, class EventValue>
 Refinement<typename System::value_type> refine_on_restep(
     Stepper& stepper, const System& sys, EventKind kind, Direction dir,
     typename System::value_type te, typename System::state_type& xe,
-    const EventValue& event_value, const LocatorOptions& locator) {
+    const EventValue& event_value, const IntegratorOptions& opt) {
   using T = typename System::value_type;
   using state_type = typename System::state_type;
+  const LocatorOptions& locator = opt.locator;
   auto abs_of = [](const T& v) { return v < 0 ? T(-v) : v; };
+  const bool reference = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+  const T atol = reference ? T(opt.reference_tolerance) : T(opt.atol);
+  const T rtol = reference ? T(opt.reference_tolerance) : T(opt.rtol);
+  // the state moves by |dtau| max|x'| when the time moves by dtau
+  auto state_resolved = [&](const T& dtau, const state_type& x) {
+    state_type f;
+    sys(x, f, te);
+    T f_max = 0, x_max = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      f_max = std::max(f_max, abs_of(f[i]));
+      x_max = std::max(x_max, abs_of(x[i]));
+    }
+    return abs_of(dtau) * f_max <= atol + rtol * x_max;
+  };
   T lo = stepper.t0(), hi = stepper.t1();
   state_type x_lo = stepper.x0(), f_lo = stepper.f0(), x_hi = stepper.x1(), f_hi = stepper.f1();
   LocatorOptions single = locator;
@@ -135,7 +153,7 @@ Refinement<typename System::value_type> refine_on_restep(
     change = *next - te;
     te = *next;
     const T ulps = 64 * std::numeric_limits<T>::epsilon() * (1 + abs_of(te));
-    if (abs_of(change) <= ulps || hi - lo <= ulps) {
+    if (abs_of(change) <= ulps || hi - lo <= ulps || state_resolved(change, xe)) {
       if (const StepResult r = stepper.restep(sys, te, xe); !r.ok) return restep_failure(r);
       return {te, {}};
     }
@@ -390,7 +408,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       Refinement<T> refined;
       try {
         refined = refine_on_restep(stepper, sys, active[first].kind, active[first].dir, te, xe,
-                                   event_value, opt.locator);
+                                   event_value, opt);
       } catch (const EventLocationError& err) {
         return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
       }
