@@ -130,8 +130,7 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"negative_hc_mu", "simulate --scene paper --law hunt-crossley --hc-mu -1", "--hc-mu"},
         Bad{"bad_rtol", "simulate --scene paper --rtol 2", "--rtol"},
         Bad{"zeta_and_c", "simulate --scene paper --zeta 0.1 --c 100", "excludes"},
-        Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv",
-            "--v0"},
+        Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv", "--v0"},
         // issue 10: accepted silently or ended as an internal error (exit 1) before
         Bad{"empty_v0", "simulate --scene paper --v0 ''", "--v0"},
         Bad{"v0_with_junk", "simulate --scene paper --v0 1x", "--v0"},

@@ -82,8 +82,8 @@ SimulationRequest build_request(const ModelFlags& flags) {
   struct {
     std::optional<double> v0, zeta, c, rtol, atol, dt, hc_k, hc_mu;
     bool no_dashpot;
-  } f = {number(flags.v0, "--v0"),     number(flags.zeta, "--zeta"), number(flags.c, "--c"),
-         number(flags.rtol, "--rtol"), number(flags.atol, "--atol"), number(flags.dt, "--dt"),
+  } f = {number(flags.v0, "--v0"),     number(flags.zeta, "--zeta"),   number(flags.c, "--c"),
+         number(flags.rtol, "--rtol"), number(flags.atol, "--atol"),   number(flags.dt, "--dt"),
          number(flags.hc_k, "--hc-k"), number(flags.hc_mu, "--hc-mu"), flags.no_dashpot};
   SimulationRequest req;
   req.scene = load_scene(flags.scene);
@@ -118,8 +118,8 @@ SimulationRequest build_request(const ModelFlags& flags) {
     req.options.dt = *f.dt;
   }
   if (flags.max_steps)
-    req.options.max_steps = parse_count(*flags.max_steps, "--max-steps", 1,
-                                        std::numeric_limits<long>::max());
+    req.options.max_steps =
+        parse_count(*flags.max_steps, "--max-steps", 1, std::numeric_limits<long>::max());
   if (req.law != LawKind::hunt_crossley && (f.hc_k || f.hc_mu)) {
     throw InputError(f.hc_k ? "--hc-k" : "--hc-mu",
                      "applies only to --law hunt-crossley (the law chosen, " +
@@ -173,7 +173,8 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
 }
 
-int run_simulate(const ModelFlags& f, bool json, const std::optional<std::string>& trajectory_flag) {
+int run_simulate(const ModelFlags& f, bool json,
+                 const std::optional<std::string>& trajectory_flag) {
   const SimulationRequest req = build_request(f);
   // given but empty is an error (resolve_output_path says so), not "no trajectory"
   if (trajectory_flag) resolve_output_path(*trajectory_flag, "--trajectory");
@@ -182,12 +183,15 @@ int run_simulate(const ModelFlags& f, bool json, const std::optional<std::string
   const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
   if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
   if (!trajectory_path.empty() && r.ok()) {
-    write_file_atomically(trajectory_path, [&](std::ostream& out) {
-      out << "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar\n" << std::setprecision(12);
-      for (const auto& p : trajectory)
-        out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
-            << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
-    }, "--trajectory");
+    write_file_atomically(
+        trajectory_path,
+        [&](std::ostream& out) {
+          out << "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar\n" << std::setprecision(12);
+          for (const auto& p : trajectory)
+            out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
+                << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
+        },
+        "--trajectory");
   }
   if (json) {
     std::cout << simulation_json(req, r).dump(2) << std::endl;
@@ -226,19 +230,22 @@ int run_sweep_command(const ModelFlags& f, const std::string& v0_grid, bool log,
   };
   const auto points = run_sweep(req);
   std::size_t failed = 0;
-  write_file_atomically(out_path, [&](std::ostream& out) {
-    out << "v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,"
-           "energy_residual,steps,status\n"
-        << std::setprecision(12);
-    for (const auto& p : points) {
-      const auto& r = p.result;
-      if (!r.ok()) ++failed;
-      out << p.v0 << ',' << p.zeta << ',' << r.e << ',' << r.e_poisson << ',' << r.e_energetic
-          << ',' << r.F_max << ',' << r.t_F_max << ',' << r.t_contact << ',' << r.z_max << ','
-          << r.alpha_max << ',' << r.z_perm << ',' << r.energy.residual << ',' << r.steps << ','
-          << to_string(r.status) << '\n';
-    }
-  }, "--out", true);
+  write_file_atomically(
+      out_path,
+      [&](std::ostream& out) {
+        out << "v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,"
+               "energy_residual,steps,status\n"
+            << std::setprecision(12);
+        for (const auto& p : points) {
+          const auto& r = p.result;
+          if (!r.ok()) ++failed;
+          out << p.v0 << ',' << p.zeta << ',' << r.e << ',' << r.e_poisson << ',' << r.e_energetic
+              << ',' << r.F_max << ',' << r.t_F_max << ',' << r.t_contact << ',' << r.z_max << ','
+              << r.alpha_max << ',' << r.z_perm << ',' << r.energy.residual << ',' << r.steps << ','
+              << to_string(r.status) << '\n';
+        }
+      },
+      "--out", true);
   std::cerr << "ivv sweep: wrote " << points.size() << " impacts to " << out_path;
   if (failed) std::cerr << " (" << failed << " failed: see the status column)";
   std::cerr << "\n";
@@ -348,8 +355,8 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
                             {"slow", r.c->slow},
                             {"seconds", r.seconds}});
   }
-  write_file_atomically(out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; }, "--out",
-                        true);
+  write_file_atomically(
+      out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; }, "--out", true);
   (out_path == "-" ? std::cerr : std::cout)
       << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
   return failed ? kExitFailure : 0;
@@ -481,7 +488,8 @@ int main(int argc, char** argv) {
     if (*integrators) {
       for (IntegratorKind k : all_integrators()) {
         std::cout << to_string(k);
-        if (verbose) std::cout << "\t" << describe(k) << "\n\t  accuracy: " << accuracy_statement(k);
+        if (verbose)
+          std::cout << "\t" << describe(k) << "\n\t  accuracy: " << accuracy_statement(k);
         std::cout << "\n";
       }
       return 0;

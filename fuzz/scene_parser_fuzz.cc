@@ -18,7 +18,9 @@ void expect(bool ok, const char* what) {
   std::abort();
 }
 
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
 
 }  // namespace
 

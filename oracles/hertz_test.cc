@@ -46,7 +46,7 @@ TEST(Hertz, TimeOfMaximumCompressionByQuadrature) {
   const double m = 0.5, K_h = 1.0e9, v0 = 0.3;
   const HertzImpact r = solve_hertz(m, K_h, v0);
   auto f = [](double s) {
-    if (s == 0.0) return 2.0 / std::sqrt(2.5);  // the limit s -> 0
+    if (s == 0.0) return 2.0 / std::sqrt(2.5);                       // the limit s -> 0
     const double one_minus = -std::expm1(2.5 * std::log1p(-s * s));  // 1 - (1 - s^2)^{5/2}
     return 2.0 * s / std::sqrt(one_minus);
   };

@@ -52,8 +52,8 @@ fs::path resolve_output_path(const fs::path& path, const std::string& field, boo
     if (links == kMaxSymlinks)
       throw InputError(name, "'" + path.string() + "': too many levels of symbolic links");
     const fs::path next = fs::read_symlink(target, ec);
-    if (ec) throw InputError(name, "cannot read the link '" + target.string() + "': " +
-                                       ec.message());
+    if (ec)
+      throw InputError(name, "cannot read the link '" + target.string() + "': " + ec.message());
     target = next.is_absolute() ? next : target.parent_path() / next;
   }
   std::error_code ec;

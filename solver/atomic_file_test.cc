@@ -35,7 +35,8 @@ class AtomicFile : public ::testing::Test {
   }
   static void write(const fs::path& p, const std::string& text, const std::string& field = "--out",
                     bool allow_stdout = false) {
-    write_file_atomically(p, [&](std::ostream& os) { os << text; }, field, allow_stdout);
+    write_file_atomically(
+        p, [&](std::ostream& os) { os << text; }, field, allow_stdout);
   }
   // The InputError's field, or "" when no InputError was thrown.
   static std::string rejected_field(const fs::path& p, const std::string& field = "--out") {

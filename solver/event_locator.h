@@ -80,10 +80,11 @@ T solve_crossing(G&& g, const T& a, const T& b, const T& ga, const T& gb, Direct
     std::ostringstream os;
     os.precision(17);
     os << "TOMS 748 event location did not converge in " << opt.max_iterations
-       << " iterations (then as many bisections): bracket [" << static_cast<double>(lo) << ", " << static_cast<double>(hi)
-       << "] of [" << static_cast<double>(a) << ", " << static_cast<double>(b)
-       << "] still " << static_cast<double>((hi - lo) / (hi < 0 ? -hi : hi))
-       << " wide relative, beyond " << bits << " bits";
+       << " iterations (then as many bisections): bracket [" << static_cast<double>(lo) << ", "
+       << static_cast<double>(hi) << "] of [" << static_cast<double>(a) << ", "
+       << static_cast<double>(b) << "] still "
+       << static_cast<double>((hi - lo) / (hi < 0 ? -hi : hi)) << " wide relative, beyond " << bits
+       << " bits";
     throw EventLocationError(os.str());
   }
   if (lo == hi) return hi;

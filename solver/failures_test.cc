@@ -67,7 +67,8 @@ TEST(Issue10, CoarseRk4UnloadingIsAFailureWithAReason) {
   ASSERT_TRUE(ok.separated()) << ok.reason;
   ASSERT_TRUE(ok8.separated()) << ok8.reason;
   EXPECT_NEAR(ok.e / ok8.e, 1.0, 1e-7);
-  EXPECT_GT(std::abs(r.e / ok8.e - 1.0), 1e-3) << "rk4 was right after all: the test proves nothing";
+  EXPECT_GT(std::abs(r.e / ok8.e - 1.0), 1e-3)
+      << "rk4 was right after all: the test proves nothing";
 }
 
 TEST(Issue10, ConsistencyCheckNamesWhatDisagreed) {
@@ -182,8 +183,8 @@ TEST(Issue10, UnconvergedHermiteRefinementIsNamed) {
   OneState sys;
   OneState::state_type xe{};
   auto value = [](EventKind, const OneState::state_type& x) { return x[0]; };
-  const auto r = refine_on_restep(stepper, sys, EventKind::yield, Direction::rising, 0.5, xe,
-                                  value, IntegratorOptions{});
+  const auto r = refine_on_restep(stepper, sys, EventKind::yield, Direction::rising, 0.5, xe, value,
+                                  IntegratorOptions{});
   EXPECT_NE(r.failure.find("did not converge"), std::string::npos) << r.failure;
   EXPECT_NE(r.failure.find("yield"), std::string::npos) << r.failure;
 }

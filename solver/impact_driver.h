@@ -99,10 +99,12 @@ struct Refinement {
 // ill-conditioned in time but not in state, and its time cannot be pinned to ulps. Not
 // converged after kMaxRefinements re-steps, or a re-step that fails: `failure` says so.
 template <class Stepper, class System, class EventValue>
-Refinement<typename System::value_type> refine_on_restep(
-    Stepper& stepper, const System& sys, EventKind kind, Direction dir,
-    typename System::value_type te, typename System::state_type& xe,
-    const EventValue& event_value, const IntegratorOptions& opt) {
+Refinement<typename System::value_type> refine_on_restep(Stepper& stepper, const System& sys,
+                                                         EventKind kind, Direction dir,
+                                                         typename System::value_type te,
+                                                         typename System::state_type& xe,
+                                                         const EventValue& event_value,
+                                                         const IntegratorOptions& opt) {
   using T = typename System::value_type;
   using state_type = typename System::state_type;
   const LocatorOptions& locator = opt.locator;
@@ -159,8 +161,8 @@ Refinement<typename System::value_type> refine_on_restep(
     }
   }
   std::ostringstream os;
-  os << Stepper::name << ": the " << to_string(kind) << " event at tau = "
-     << static_cast<double>(te) << " did not converge in " << kMaxRefinements
+  os << Stepper::name << ": the " << to_string(kind)
+     << " event at tau = " << static_cast<double>(te) << " did not converge in " << kMaxRefinements
      << " Hermite re-steps (last change " << static_cast<double>(change) << ", bracket width "
      << static_cast<double>(hi - lo)
      << "): re-steps of different lengths disagree, as when the step is too large for the "
@@ -179,8 +181,8 @@ ConsistencyMeasures consistency_measures(const NormalisedRun<System>& run, const
   m.restitution_steps = run.steps - run.steps_alpha_max;
   const double energy_scale = sys.force_scale * sys.length;  // m v0^2 [J]
   const double final_kinetic = 0.5 * d(x[System::W]) * d(x[System::W]);
-  const double stored = d(sys.law.stored_energy(run.branch, T(sys.length * sys.z(x)))) /
-                        energy_scale;
+  const double stored =
+      d(sys.law.stored_energy(run.branch, T(sys.length * sys.z(x)))) / energy_scale;
   double viscous = 0.0;
   if constexpr (System::has_dashpot) viscous = d(x[System::WV]);
   double plastic = 0.0;
@@ -349,35 +351,35 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       for (int i = 0; i < n_active; ++i) gp[k][i] = event_value(active[i].kind, *xk);
     }
     try {
-    for (int i = 0; i < n_active; ++i) {
-      armed[i] = is_pre_event(gp[0][i], active[i].dir);
-      sub[i] = n + 1;
-      if (!armed[i]) continue;
-      for (int k = 1; k <= n; ++k)
-        if (!is_pre_event(gp[k][i], active[i].dir)) {
-          sub[i] = k;
-          break;
+      for (int i = 0; i < n_active; ++i) {
+        armed[i] = is_pre_event(gp[0][i], active[i].dir);
+        sub[i] = n + 1;
+        if (!armed[i]) continue;
+        for (int k = 1; k <= n; ++k)
+          if (!is_pre_event(gp[k][i], active[i].dir)) {
+            sub[i] = k;
+            break;
+          }
+        first_sub = std::min(first_sub, sub[i]);
+      }
+      for (int i = 0; i < n_active; ++i) {
+        if (sub[i] != first_sub || first_sub > n) continue;
+        const int k = sub[i];
+        if (opt.locate_events) {
+          auto g = [&](T t) {
+            stepper.interpolate(sys, t, s);
+            return event_value(active[i].kind, s);
+          };
+          found[i] = solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir,
+                                    opt.locator);
+        } else {
+          found[i] = t1;  // naive detection at the end of the step
         }
-      first_sub = std::min(first_sub, sub[i]);
-    }
-    for (int i = 0; i < n_active; ++i) {
-      if (sub[i] != first_sub || first_sub > n) continue;
-      const int k = sub[i];
-      if (opt.locate_events) {
-        auto g = [&](T t) {
-          stepper.interpolate(sys, t, s);
-          return event_value(active[i].kind, s);
-        };
-        found[i] =
-            solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir, opt.locator);
-      } else {
-        found[i] = t1;  // naive detection at the end of the step
+        if (!t_event || *found[i] < *t_event) {
+          t_event = found[i];
+          first = i;
+        }
       }
-      if (!t_event || *found[i] < *t_event) {
-        t_event = found[i];
-        first = i;
-      }
-    }
     } catch (const EventLocationError& err) {
       return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
     }

@@ -127,8 +127,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"syntax", replace(kGoodScene, "[impact]", "[impact"), "bad.toml"},
         // issue 10: finite inputs whose derived parameters or scales are not representable
         // ended in a TOMS 748 message or inf/nan on stdout; the field at fault is named
-        BadScene{"mass_1e308", replace(kGoodScene, "mass = 0.5", "mass = 1e308"),
-                 "impactor.mass"},
+        BadScene{"mass_1e308", replace(kGoodScene, "mass = 0.5", "mass = 1e308"), "impactor.mass"},
         BadScene{"modulus_1e_320",
                  replace(kGoodScene, "youngs_modulus = 207e9", "youngs_modulus = 1e-320"),
                  "impactor.youngs_modulus"},

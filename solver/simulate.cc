@@ -184,8 +184,8 @@ ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
   }
   ImpactResult r;
   r.failure = FailureKind::integrator;
-  r.reason = "no integrator with the number " +
-             std::to_string(static_cast<int>(req.integrator)) + " (not in all_integrators())";
+  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(req.integrator)) +
+             " (not in all_integrators())";
   return r;
 }
 

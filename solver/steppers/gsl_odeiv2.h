@@ -94,9 +94,9 @@ class GslStepper : public HermiteSteps<System> {
     gsl_odeiv2_driver* d = driver_.get();
     const int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, opt_.tau_max, &h_, y);
     if (status == GSL_EBADFUNC) {
-      return StepResult::failure(std::string(name) + ": the right-hand side is not finite near tau = " +
-                                 std::to_string(t0_) +
-                                 " (the contact force overflowed or is undefined at this state)");
+      return StepResult::failure(
+          std::string(name) + ": the right-hand side is not finite near tau = " +
+          std::to_string(t0_) + " (the contact force overflowed or is undefined at this state)");
     }
     if (status != GSL_SUCCESS || !(t > t0_)) {
       return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
@@ -136,8 +136,8 @@ class GslStepper : public HermiteSteps<System> {
     for (std::size_t i = 0; i < N; ++i) out[i] = y[i];
     for (std::size_t i = 0; i < N; ++i) {
       if (!std::isfinite(out[i]))
-        return StepResult::failure(std::string(name) + ": non-finite state re-stepping to tau = " +
-                                   std::to_string(t));
+        return StepResult::failure(std::string(name) +
+                                   ": non-finite state re-stepping to tau = " + std::to_string(t));
     }
     return StepResult::success();
   }
