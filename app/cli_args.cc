@@ -74,4 +74,17 @@ std::vector<double> parse_grid(const std::string& text, const std::string& field
   return values;
 }
 
+std::map<std::string, double, std::less<>> parse_parameters(const std::vector<std::string>& items) {
+  std::map<std::string, double, std::less<>> out;
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--param", "'" + item + "': expected NAME=VALUE, e.g. mu=0.3");
+    const std::string name = item.substr(0, eq);
+    const double value = parse_number(item.substr(eq + 1), "--param " + name);
+    if (!out.emplace(name, value).second) throw InputError("--param " + name, "given twice");
+  }
+  return out;
+}
+
 }  // namespace ivv

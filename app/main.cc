@@ -16,6 +16,7 @@
 #include "app/cli_args.h"
 #include "app/result_json.h"
 #include "bench/benchmarks.h"
+#include "reports/law_report.h"
 #include "reports/report.h"
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
@@ -23,6 +24,7 @@
 #include "solver/integrator_accuracy.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
+#include "verification/conformance.h"
 #include "verification/registry.h"
 
 namespace ivv {
@@ -45,6 +47,9 @@ struct ModelFlags {
   std::optional<std::string> hc_k;
   std::optional<std::string> hc_mu;
   std::optional<std::string> max_steps;
+  std::vector<std::string> params;  // NAME=VALUE
+  std::string force, unload;        // expression law
+  bool allow_tension = false;
 };
 
 std::optional<double> number(const std::optional<std::string>& text, const std::string& field) {
@@ -52,8 +57,11 @@ std::optional<double> number(const std::optional<std::string>& text, const std::
   return parse_number(*text, field);
 }
 
-void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping) {
-  cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)")->required();
+void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
+                     bool scene_required = true) {
+  auto* scene =
+      cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)");
+  if (scene_required) scene->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
     auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
@@ -62,8 +70,22 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
     z->excludes(c)->excludes(n);
     c->excludes(n);
   }
-  cmd.add_option("--law", f.law, "contact law: hertz, elastoplastic, linearized, hunt-crossley")
-      ->capture_default_str();
+  auto* law = cmd.add_option("--law", f.law, "contact law (see `ivv laws`)")->capture_default_str();
+  auto* force = cmd.add_option(
+      "--force", f.force,
+      "expression law: loading force [N] in z, zdot, zmax, m, R, E_star, K_h, z_y, K_y, v0 and "
+      "--param names (muParser), e.g. 'K_h*z^1.5'");
+  force->excludes(law);
+  cmd.add_option("--unload", f.unload,
+                 "expression law: unloading force [N] after dz/dt = 0 (zmax = z_m); default: "
+                 "the --force expression")
+      ->needs(force);
+  cmd.add_flag("--allow-tension", f.allow_tension,
+               "expression law: F may go negative and contact ends at z = 0 (default: F >= 0, "
+               "contact ends at F = 0)")
+      ->needs(force);
+  cmd.add_option("--param", f.params,
+                 "law parameter NAME=VALUE (repeatable; `ivv laws -v` lists each law's)");
   cmd.add_option("--integrator", f.integrator, "integrator (see `ivv integrators`)")
       ->capture_default_str();
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
@@ -103,14 +125,25 @@ SimulationRequest build_request(const ModelFlags& flags) {
     req.scene.damping = Damping::coefficient(*f.c);
   }
   if (f.no_dashpot) req.scene.damping = Damping::none();
-  req.law = parse_law(flags.law);
-  req.integrator = parse_integrator(flags.integrator);
-  if (req.law == LawKind::hunt_crossley && (f.zeta || f.c)) {
-    throw InputError(f.zeta ? "--zeta" : "--c",
-                     "hunt-crossley carries its own damping (--hc-mu) and runs without the "
-                     "series dashpot");
+  if (!flags.force.empty()) {
+    req.law = LawKind::expression;
+    req.expression = {flags.force, flags.unload, flags.allow_tension};
+  } else {
+    req.law = parse_law(flags.law);
   }
-  if (req.law == LawKind::hunt_crossley) req.scene.damping = Damping::none();
+  req.integrator = parse_integrator(flags.integrator);
+  req.parameters = parse_parameters(flags.params);
+  if (f.hc_k || f.hc_mu) {
+    const char* flag = f.hc_k ? "--hc-k" : "--hc-mu";
+    if (req.law != LawKind::hunt_crossley)
+      throw InputError(flag, "only the hunt-crossley law has K and mu (--law hunt-crossley)");
+    if (f.hc_k && !(std::isfinite(*f.hc_k) && *f.hc_k > 0))
+      throw InputError("--hc-k", "must be a finite number > 0 N/m^1.5");
+    if (f.hc_mu && !(std::isfinite(*f.hc_mu) && *f.hc_mu >= 0))
+      throw InputError("--hc-mu", "must be a finite number >= 0 s/m");
+    if (f.hc_k) req.parameters["K"] = *f.hc_k;
+    if (f.hc_mu) req.parameters["mu"] = *f.hc_mu;
+  }
   if (f.rtol) req.options.rtol = *f.rtol;
   if (f.atol) req.options.atol = *f.atol;
   if (f.dt) {
@@ -120,13 +153,6 @@ SimulationRequest build_request(const ModelFlags& flags) {
   if (flags.max_steps)
     req.options.max_steps =
         parse_count(*flags.max_steps, "--max-steps", 1, std::numeric_limits<long>::max());
-  if (req.law != LawKind::hunt_crossley && (f.hc_k || f.hc_mu)) {
-    throw InputError(f.hc_k ? "--hc-k" : "--hc-mu",
-                     "applies only to --law hunt-crossley (the law chosen, " +
-                         std::string(to_string(req.law)) + ", has no such parameter)");
-  }
-  req.hunt_crossley.K = f.hc_k;
-  req.hunt_crossley.mu = f.hc_mu.value_or(0.0);
   try {
     validate(req);
   } catch (const InputError& e) {
@@ -308,6 +334,66 @@ int run_fit_hc(const ModelFlags& f, bool json) {
   return 0;
 }
 
+struct CheckLawFlags {
+  std::string expect_cor;
+  std::optional<double> cor_tolerance;
+  bool elastic_at_low_speed = false;
+  bool no_monotone = false;
+  std::string v0_grid, zeta_grid;
+  bool json = false;
+  std::string report_dir;
+};
+
+int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& command_line) {
+  if (f.scene.empty()) f.scene = "paper";
+  if (f.force.empty() && f.law == "elastoplastic" && f.params.empty() && !f.hc_k && !f.hc_mu)
+    throw InputError("--force", "give the law to check: --force EXPR (or --law NAME)");
+  const SimulationRequest req = build_request(f);
+  conformance::Grid grid = conformance::default_grid(req.scene);
+  grid.options = req.options;
+  if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0", false);
+  for (double v : grid.velocities)
+    if (!(v > 0)) throw InputError("--v0", "velocities must be > 0 m/s");
+  if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta", false);
+  for (double z : grid.zetas)
+    if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
+  conformance::Claims claims;
+  claims.elastic_at_low_speed = c.elastic_at_low_speed;
+  claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping = !c.no_monotone;
+  if (!c.expect_cor.empty()) {
+    claims.expected_cor = compile_cor_claim(c.expect_cor, req.parameters, req.scene);
+    claims.expected_cor_text = c.expect_cor;
+  }
+  if (c.cor_tolerance) {
+    if (!(*c.cor_tolerance > 0 && *c.cor_tolerance < 1))
+      throw InputError("--cor-tolerance", "must lie in (0, 1)");
+    claims.cor_tolerance = *c.cor_tolerance;
+    claims.cor_tolerance_reason = "given on the command line (--cor-tolerance)";
+  }
+  if (!c.report_dir.empty()) reports::check_report_dir(c.report_dir);
+  const conformance::Report report =
+      conformance::run_conformance(conformance::registry_law(req), claims, grid);
+  if (!c.report_dir.empty()) {
+    const auto index = reports::write_law_report(report, c.report_dir, command_line);
+    std::cerr << "ivv check-law: wrote " << index.string() << "\n";
+  }
+  if (c.json) {
+    nlohmann::json j = conformance::to_json(report);
+    j["law"]["parameters"] = req.parameters;
+    if (req.law == LawKind::expression) {
+      j["law"]["force"] = req.expression.force;
+      j["law"]["unload"] = req.expression.unload;
+      j["law"]["allow_tension"] = req.expression.allow_tension;
+    }
+    j["law"]["scene"] = req.scene.name;
+    if (claims.expected_cor) j["law"]["expect_cor"] = c.expect_cor;
+    std::cout << j.dump(2) << std::endl;
+  } else {
+    std::cout << report.full();
+  }
+  return report.passed() ? 0 : kExitFailure;
+}
+
 int run_verify(const std::string& filter, const std::string& out_path, int threads, bool list) {
   using namespace verification;
   const auto cases = all_cases().matching(filter);
@@ -435,6 +521,8 @@ int main(int argc, char** argv) {
   bool verbose = false;
   integrators->add_flag("-v,--verbose", verbose, "add a description to each");
   auto* laws = app.add_subcommand("laws", "list the contact laws, one per line");
+  bool laws_verbose = false;
+  laws->add_flag("-v,--verbose", laws_verbose, "add each law's equation and parameters");
 
   ModelFlags fit_flags;
   bool fit_json = false;
@@ -464,6 +552,30 @@ int main(int argc, char** argv) {
                    "exit 0 even when a case fails (the report shows it)");
   report->add_flag("--quick", report_opt.quick, "fewer sweep and timing points (smoke runs)");
   report->add_flag("-q,--quiet", report_quiet, "no progress lines on stderr");
+
+  ModelFlags check_flags;
+  CheckLawFlags check;
+  auto* check_law = app.add_subcommand(
+      "check-law",
+      "put a contact law (--force EXPR, or --law NAME) through the conformance checks");
+  add_model_flags(*check_law, check_flags, false, false);
+  check_law->add_option("--expect-cor", check.expect_cor,
+                        "the COR the law is meant to deliver: an expression in v0, the scene's "
+                        "constants and --param names");
+  check_law->add_option("--cor-tolerance", check.cor_tolerance,
+                        "allowed |e - expected| (default 1e-6: 100x the integration error)");
+  check_law->add_flag("--elastic-at-low-speed", check.elastic_at_low_speed,
+                      "claim e -> 1 as v0 -> 0 (checked)");
+  check_law->add_flag("--no-monotone", check.no_monotone,
+                      "do not claim that e falls with v0 and with damping");
+  check_law->add_option("--v0", check.v0_grid,
+                        "velocity grid [m/s], LO:HI:N or a,b,c (default: 7 points over three "
+                        "decades around the scene's v0)");
+  check_law->add_option("--zeta", check.zeta_grid,
+                        "damping ratios of the series dashpot (default 0,0.1; rate-dependent "
+                        "laws: 0 only)");
+  check_law->add_flag("--json", check.json, "print the verdict and every check as JSON");
+  check_law->add_option("--report", check.report_dir, "write DIR/index.html for this law");
 
   auto* bench = app.add_subcommand(
       "bench", "Google Benchmark timings of one impact per integrator (flags: --benchmark_*)");
@@ -495,6 +607,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*fit) return run_fit_hc(fit_flags, fit_json);
+    if (*check_law) {
+      std::string command_line;
+      for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
+      return run_check_law(check_flags, check, command_line);
+    }
     if (*report) {
       for (int i = 0; i < argc; ++i)
         report_opt.command_line += (i ? " " : "") + std::string(argv[i]);
@@ -509,7 +626,15 @@ int main(int argc, char** argv) {
       return bench::run_benchmarks(n, args.data());
     }
     if (*laws) {
-      for (LawKind k : all_laws()) std::cout << to_string(k) << "\n";
+      for (const LawInfo& l : all_law_info()) {
+        std::cout << l.name;
+        if (laws_verbose) {
+          std::cout << "\t" << l.summary;
+          for (const ParameterSpec& ps : l.parameters)
+            std::cout << "\n\t--param " << ps.name << " [" << ps.unit << "]: " << ps.meaning;
+        }
+        std::cout << "\n";
+      }
       return 0;
     }
   } catch (const InputError& e) {

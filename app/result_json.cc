@@ -83,9 +83,17 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
                             {"rtol", req.options.rtol},
                             {"atol", req.options.atol}};
   if (req.integrator == IntegratorKind::rk4) request["dt"] = req.options.fixed_dt();
-  if (req.law == LawKind::hunt_crossley) {
-    request["hc_k"] = req.hunt_crossley.K.value_or(p.K_h);
-    request["hc_mu"] = req.hunt_crossley.mu;
+  request["law_summary"] = law_info(req.law).summary;
+  if (!req.parameters.empty()) request["parameters"] = req.parameters;
+  if (req.law == LawKind::hunt_crossley) {  // the values in use, defaults included
+    const auto& spec = law_info(req.law).parameters;
+    request["hc_k"] = parameter_value(req.parameters, spec[0], p.K_h);
+    request["hc_mu"] = parameter_value(req.parameters, spec[1]);
+  }
+  if (req.law == LawKind::expression) {
+    request["force"] = req.expression.force;
+    if (!req.expression.unload.empty()) request["unload"] = req.expression.unload;
+    request["allow_tension"] = req.expression.allow_tension;
   }
   return {{"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
 }

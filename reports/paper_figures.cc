@@ -117,8 +117,8 @@ void response_figures(double v0, int fig, std::vector<Figure>& out) {
   const HuntCrossleyFit fit = fit_hunt_crossley(req);
   SimulationRequest hc_req = request(s, LawKind::hunt_crossley);
   hc_req.scene.damping = Damping::none();
-  hc_req.hunt_crossley.K = fit.K;
-  hc_req.hunt_crossley.mu = fit.mu;
+  hc_req.parameters["K"] = fit.K;
+  hc_req.parameters["mu"] = fit.mu;
   const Run hc = run(hc_req, "fitted Hunt-Crossley at v0 = " + number(v0));
   const LinearCurves lin = linear_curves(s);
 

@@ -9,16 +9,19 @@
 #include <set>
 #include <thread>
 
+#include "oracles/hunt_crossley.h"
 #include "reports/companions.h"
 #include "reports/figure.h"
 #include "reports/gnuplot_svg.h"
 #include "reports/html.h"
+#include "reports/law_report.h"
 #include "reports/paper_figures.h"
 #include "reports/provenance.h"
 #include "reports/restitution.h"
 #include "reports/speed_error.h"
 #include "solver/atomic_file.h"
 #include "solver/input_error.h"
+#include "verification/examples.h"
 #include "verification/registry.h"
 
 namespace ivv::reports {
@@ -250,7 +253,7 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
 // ---- section 4 ---------------------------------------------------------------------------
 
 std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book) {
-  std::string out = "<h2 id=\"cases\">4. Every verification case</h2>\n";
+  std::string out = "<h2 id=\"cases\">5. Every verification case</h2>\n";
   out +=
       "<p>Each case measures one number and compares it with a reference under a tolerance "
       "whose reason is stated (<code>verification/</code>, the same registry that ctest "
@@ -332,6 +335,96 @@ std::string paper_html(const SectionOptions& so, FigureBook& book) {
       "<p>" +
       paper_parameters_html() + "</p>\n";
   return out + figures_html(paper_figures(so), book);
+}
+
+// Contact-law worked examples: the same memoised conformance runs the example cases judge.
+std::string examples_html(const SectionOptions& so, FigureBook& book) {
+  using verification::ExampleRun;
+  const PlacePlot place = [&book](const Plot& p, const std::string& caption) {
+    return book.add({p, escape(caption), false});
+  };
+  auto command = [](const ExampleRun& run) {
+    return run.command.empty() ? std::string()
+                               : "<p>The same check from the command line: <code>" +
+                                     escape(run.command) + "</code></p>\n";
+  };
+  std::string out =
+      "<p>What a contact-law author gets from <code>ivv check-law</code> and the C++ "
+      "conformance API (<code>verification/conformance.h</code>): static checks of the law's "
+      "equations, then dynamic checks over v<sub>0</sub> = 0.01-10 m/s with and without the "
+      "series dashpot. Each example below is judged by the cases <code>examples.*</code>; the "
+      "tables are those cases' measurements.</p>\n";
+  so.say("worked examples: Thornton");
+  const ExampleRun& thornton = verification::thornton_example();
+  out += "<h3 id=\"example-thornton\">Thornton (1997), elastic-perfectly-plastic (C++)</h3>\n" +
+         law_section_html(thornton.report, "examples-thornton",
+                          "<p>Source: <code>examples/laws/thornton.h</code>; claimed COR: "
+                          "Thornton's closed form (SPEC §3).</p>\n",
+                          place);
+  so.say("worked examples: Kuwabara-Kono");
+  const ExampleRun& kk = verification::kuwabara_kono_example();
+  out += "<h3 id=\"example-kuwabara-kono\">Kuwabara-Kono viscoelastic Hertz (C++)</h3>\n" +
+         law_section_html(kk.report, "examples-kuwabara-kono",
+                          "<p>Source: <code>examples/laws/kuwabara_kono.h</code>; claimed COR: "
+                          "the Muller-Poschel Pade form (SPEC §3).</p>\n",
+                          place);
+  so.say("worked examples: Kelvin-Voigt");
+  const ExampleRun& kv = verification::kelvin_voigt_example();
+  out +=
+      "<h3 id=\"example-kelvin-voigt\">Kelvin-Voigt k z + c dz/dt (expression): rejected</h3>\n" +
+      law_section_html(kv.report, "examples-kelvin-voigt", command(kv), place);
+
+  so.say("worked examples: Hunt-Crossley damping maps");
+  out +=
+      "<h3 id=\"example-hunt-crossley\">Hunt-Crossley with the published &mu;(e) maps</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup>(1 + &mu; dz/dt) with &mu; from each map for a "
+      "target e, put through <code>check-law --expect-cor</code> (e.g. <code>" +
+      escape(verification::hunt_crossley_map_example("hunt-crossley", 0.5).command) +
+      "</code>). Delivered e: the reference run at v<sub>0</sub> = 1 m/s (it is the same at "
+      "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
+      "miss is within 10<sup>-6</sup>.</p>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& map : oracles::damping_maps()) {
+    for (double e_t : verification::example_target_cors()) {
+      const ExampleRun& run = verification::hunt_crossley_map_example(std::string(map.name), e_t);
+      const auto* c = verification::find_check(run.report, "dynamic.expected_cor");
+      std::optional<double> e;
+      for (const auto& p : run.report.cor)
+        if (std::abs(p.v0 - 1.0) < 1e-12 && p.e) e = p.e;
+      rows.push_back({escape(map.name), escape(map.formula), number_html(e_t),
+                      e ? number_html(*e, 7) : "failed", e ? number_html(*e - e_t, 3) : "",
+                      c && c->passed ? "<span class=\"pass\">delivers</span>"
+                                     : "<span class=\"fail\">misses</span>"});
+    }
+  }
+  out += table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows);
+
+  so.say("worked examples: Tsuji-type damping");
+  out +=
+      "<h3 id=\"example-tsuji\">Hertz with Tsuji-type damping (DEM codes)</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup> + &gamma;<sub>n</sub> dz/dt, &gamma;<sub>n</sub> = "
+      "-2&radic;(5/6) &beta; &radic;(S<sub>n</sub> m), S<sub>n</sub> = 2E*&radic;(R z), "
+      "&beta; = ln e<sub>t</sub>/&radic;(ln&sup2; e<sub>t</sub> + &pi;&sup2;) (LIGGGHTS "
+      "<code>model hertz</code>), once with the force clamped at F &ge; 0 (contact ends at "
+      "F = 0, LIGGGHTS <code>limitForce on</code>) and once with tension until z = 0. "
+      "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
+      "<code>examples.tsuji.*</code>).</p>\n";
+  rows.clear();
+  for (bool tension : {false, true}) {
+    for (double e_t : verification::example_target_cors()) {
+      const ExampleRun& run = verification::tsuji_example(e_t, tension);
+      const auto* c = verification::find_check(run.report, "dynamic.expected_cor");
+      std::optional<double> e;
+      for (const auto& p : run.report.cor)
+        if (std::abs(p.v0 - 1.0) < 1e-12 && p.e) e = p.e;
+      rows.push_back({tension ? "tension until z = 0" : "clamped, F &ge; 0", number_html(e_t),
+                      e ? number_html(*e, 7) : "failed", e ? number_html(*e - e_t, 3) : "",
+                      c && c->passed ? "<span class=\"pass\">delivers</span>"
+                                     : "<span class=\"fail\">misses</span>"});
+    }
+  }
+  out += table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"}, rows);
+  return out;
 }
 
 std::string restitution_html(const SectionOptions& so, FigureBook& book) {
@@ -447,7 +540,7 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
 }
 
 std::string companions_html() {
-  return "<h2 id=\"companions\">6. Machine-readable companions</h2>\n"
+  return "<h2 id=\"companions\">7. Machine-readable companions</h2>\n"
          "<p>Beside this page, in the same directory:</p><ul>\n"
          "<li><a href=\"results.json\"><code>results.json</code></a>: "
          "<code>{\"cases\": [{\"id\", \"title\", \"tier\", \"passed\", \"measured\", "
@@ -521,6 +614,7 @@ ReportSummary write_report(const ReportOptions& opt) {
   };
   const std::string paper = section("paper figures", paper_html);
   const std::string restitution = section("restitution trends", restitution_html);
+  const std::string examples = section("contact-law worked examples", examples_html);
   const std::string cases = cases_html(records, book);
   const std::string speed = section("speed against error", speed_html);
 
@@ -539,14 +633,16 @@ ReportSummary write_report(const ReportOptions& opt) {
       "<li><a href=\"#summary\">Summary</a></li>"
       "<li><a href=\"#paper\">The paper reproduced</a></li>"
       "<li><a href=\"#restitution\">Restitution trends</a></li>"
+      "<li><a href=\"#examples\">Contact-law worked examples</a></li>"
       "<li><a href=\"#cases\">Every verification case</a></li>"
       "<li><a href=\"#speed\">Speed against error</a></li>"
       "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
   body += summary_html(records, prov, opt, section_errors, stages);
   body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
   body += "<h2 id=\"restitution\">3. Restitution trends</h2>\n" + restitution;
+  body += "<h2 id=\"examples\">4. Contact-law worked examples</h2>\n" + examples;
   body += cases;
-  body += "<h2 id=\"speed\">5. Speed against error</h2>\n" + speed;
+  body += "<h2 id=\"speed\">6. Speed against error</h2>\n" + speed;
   body += companions_html();
   const std::string html = page("ivv verification report", book.resolve(body));
 

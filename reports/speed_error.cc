@@ -235,7 +235,7 @@ SpeedSection speed_section(const SectionOptions& options) {
       SimulationRequest r;
       r.scene = paper_with(1.0, Damping::none());
       r.law = LawKind::hunt_crossley;
-      r.hunt_crossley.mu = 5.0;
+      r.parameters["mu"] = 5.0;
       specs.push_back({"Hunt-Crossley μv0 = 5",
                        "Hunt-Crossley (eq. 27) with K = K<sub>h</sub>, "
                        "μ = 5 s/m, v<sub>0</sub> = 1 m/s: μv<sub>0</sub> &gt; 1, a damping force "

@@ -27,10 +27,10 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
   SimulationRequest hc = model;
   hc.law = LawKind::hunt_crossley;
   hc.scene.damping = Damping::none();
-  hc.hunt_crossley.K = p.K_h;
+  hc.parameters["K"] = p.K_h;
   const double v0 = model.scene.velocity;
   auto run = [&](double u0) {
-    hc.hunt_crossley.mu = u0 / v0;
+    hc.parameters["mu"] = u0 / v0;
     ++fit.evaluations;
     const ImpactResult r = simulate(hc);
     if (!r.separated()) throw std::runtime_error("Hunt-Crossley run failed: " + r.reason);
@@ -43,7 +43,7 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
     const ImpactResult trial = run(0.0);
     fit.mu = 0.0;
     fit.K = p.K_h * std::pow(fit.F_max / trial.F_max, 2.5);
-    hc.hunt_crossley.K = fit.K;
+    hc.parameters["K"] = fit.K;
     fit.hc = run(0.0);
     fit.t_contact_hc = fit.hc.t_contact;
     return fit;
@@ -74,7 +74,7 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
   const ImpactResult trial = run(u0);
   fit.mu = u0 / v0;
   fit.K = p.K_h * std::pow(fit.F_max / trial.F_max, 2.5);
-  hc.hunt_crossley.K = fit.K;
+  hc.parameters["K"] = fit.K;
   fit.hc = run(u0);
   fit.t_contact_hc = fit.hc.t_contact;
   return fit;

@@ -8,6 +8,7 @@
 //   peak_force        dF/dt = 0 (rate-dependent laws only, where F_max is not
 //                     at z_m)                                                 falling
 //   separation        F = 0 on the unloading branch: end of contact           falling
+//                     (z = 0 instead for a law that allows tension)
 // Onset is the initial state (alpha = 0, alpha_dot = v0). Capture is not an event but a
 // criterion checked after each unloading step: when the rebound the remaining energy could
 // still produce, sqrt(w^2 + 2 U), is below `capture_cor`, the impact ends with e = 0.
@@ -62,7 +63,7 @@ struct NormalisedRun {
   std::string reason;
   T tau_end = 0;
   state_type x_end{};
-  Branch<T> branch;  // final branch (z_max, z_perm)
+  typename System::history_type branch;  // final history (z_max, z_perm, ...)
   T tau_z_max = 0, F_max = 0, tau_F_max = 0;
   bool has_max_displacement = false;
   T tau_alpha_max = 0;
@@ -212,7 +213,8 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
   Stepper stepper(opt);
   state_type x = System::initial_state();
   T tau = 0;
-  sys.branch = Branch<T>{};
+  sys.branch = typename System::history_type{};
+  sys.tension = law_allows_tension(sys.law);
   stepper.start(sys, tau, x);
   run.events.push_back({EventKind::onset, tau, x, sys.force(x)});
   if (observer) (*observer)(0.0, x, sys);
@@ -241,8 +243,8 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
         return s[System::W];
       case EventKind::peak_force:
         return sys.force_rate(s);
-      default:  // separation
-        return sys.force(s);
+      default:  // separation: F = 0, or z = 0 for a law that allows tension
+        return sys.tension ? sys.z(s) : sys.force(s);
     }
   };
   auto fail = [&](FailureKind kind, std::string why) {
@@ -318,7 +320,8 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     if (System::rate_dependent && !peak_fired)
       active[n_active++] = {EventKind::peak_force, Direction::falling, false};
     if (!loading)
-      active[n_active++] = {EventKind::separation, Direction::falling, !System::rate_dependent};
+      active[n_active++] = {EventKind::separation, Direction::falling,
+                            !System::rate_dependent && !sys.tension};
 
     // Earliest crossing among them. When a non-monotone function is active the step is probed
     // at `samples` equal subintervals (so that a function returning to its pre-event side

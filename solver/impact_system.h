@@ -32,6 +32,8 @@ struct ImpactSystem {
   static_assert(!(Dashpot && Law::rate_dependent),
                 "a rate-dependent law carries its own damping and is used without a dashpot");
 
+  using law_type = Law;
+  using history_type = history_t<Law, T>;
   static constexpr bool has_dashpot = Dashpot;
   static constexpr bool rate_dependent = Law::rate_dependent;
   static constexpr std::size_t N = Dashpot ? 6 : 4;
@@ -47,7 +49,8 @@ struct ImpactSystem {
   static constexpr std::size_t WV = Dashpot ? 5 : N;  // == N: absent
 
   Law law;
-  Branch<T> branch;
+  history_type branch;
+  bool tension = false;      // law_allows_tension(law): contact ends at z = 0, F may be < 0
   double length = 1.0;       // v0/omega0 [m]
   double velocity = 1.0;     // v0 [m/s]
   double force_scale = 1.0;  // m v0 omega0 [N]

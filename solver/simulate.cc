@@ -10,8 +10,11 @@
 namespace ivv {
 namespace {
 
-constexpr std::array kLaws = {LawKind::hertz, LawKind::elastoplastic, LawKind::linearized,
-                              LawKind::hunt_crossley};
+constexpr std::array kLaws = [] {
+  std::array<LawKind, static_cast<std::size_t>(LawKind::expression)> kinds{};
+  for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<LawKind>(i);
+  return kinds;
+}();
 constexpr std::array kIntegrators = {
     IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
     IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf,
@@ -31,20 +34,6 @@ std::span<const LawKind> all_laws() {
 }
 std::span<const IntegratorKind> all_integrators() {
   return kIntegrators;
-}
-
-std::string_view to_string(LawKind k) {
-  switch (k) {
-    case LawKind::hertz:
-      return "hertz";
-    case LawKind::elastoplastic:
-      return "elastoplastic";
-    case LawKind::linearized:
-      return "linearized";
-    case LawKind::hunt_crossley:
-      return "hunt-crossley";
-  }
-  return "?";
 }
 
 std::string_view to_string(IntegratorKind k) {
@@ -119,12 +108,6 @@ std::string_view to_string(EventKind k) {
   return "?";
 }
 
-LawKind parse_law(const std::string& name, const std::string& field) {
-  for (LawKind k : kLaws)
-    if (name == to_string(k)) return k;
-  throw InputError(field, "unknown contact law '" + name + "'; valid names: " + name_list(kLaws));
-}
-
 IntegratorKind parse_integrator(const std::string& name, const std::string& field) {
   for (IntegratorKind k : kIntegrators)
     if (name == to_string(k)) return k;
@@ -151,16 +134,38 @@ std::string IntegratorOptions::invalid_reason() const {
   return why ? why->field + " " + why->message : std::string();
 }
 
+void validate(const IntegratorOptions& options) {
+  if (const auto why = options.invalid()) throw InputError(why->field, why->message);
+}
+
 void validate(const SimulationRequest& req) {
   validate(req.scene);
-  if (const auto why = req.options.invalid()) throw InputError(why->field, why->message);
-  if (req.law == LawKind::hunt_crossley) {
-    if (req.hunt_crossley.K && !(std::isfinite(*req.hunt_crossley.K) && *req.hunt_crossley.K > 0))
-      throw InputError("--hc-k", "must be a finite number > 0 N/m^1.5");
-    if (!(std::isfinite(req.hunt_crossley.mu) && req.hunt_crossley.mu >= 0))
-      throw InputError("--hc-mu", "must be a finite number >= 0 s/m");
+  validate(req.options);
+  validate_parameters(req.law, req.parameters);
+  const LawInfo& law = law_info(req.law);
+  if (req.law != LawKind::expression && !req.expression.force.empty())
+    throw InputError("--force", "an expression law replaces --law " + std::string(law.name) +
+                                    "; give one or the other");
+  if (req.law == LawKind::expression && req.expression.force.empty())
+    throw InputError("--force", "the expression law needs a force expression");
+  bool rate_dependent = law.rate_dependent;
+  if (req.law == LawKind::expression)
+    rate_dependent = detail::compile_expression_law(req, derive(req.scene))->uses_rate();
+  if (rate_dependent && req.scene.damping.kind != Damping::Kind::none) {
+    throw InputError(
+        req.scene.damping.kind == Damping::Kind::ratio ? "--zeta" : "--c",
+        std::string(req.law == LawKind::expression ? "an expression that uses zdot"
+                                                   : "the " + std::string(law.name) + " law") +
+            " carries its own damping and runs without the series dashpot");
   }
 }
+
+namespace detail {
+std::shared_ptr<const CompiledExpressions> compile_expression_law(const SimulationRequest& req,
+                                                                  const DerivedParameters& p) {
+  return std::make_shared<const CompiledExpressions>(req.expression, req.parameters, req.scene, p);
+}
+}  // namespace detail
 
 namespace {
 

@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "solver/integrator_options.h"
+#include "solver/law_registry.h"
+#include "solver/laws/expression.h"
 #include "solver/result.h"
 #include "solver/scene.h"
 
 namespace ivv {
 
-enum class LawKind { hertz, elastoplastic, linearized, hunt_crossley };
 enum class IntegratorKind {
   odeint_dopri5,
   odeint_rosenbrock4,
@@ -28,28 +29,22 @@ enum class IntegratorKind {
   mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
 };
 
+// The built-in laws (not `expression`), in registry order.
 std::span<const LawKind> all_laws();
 std::span<const IntegratorKind> all_integrators();
-std::string_view to_string(LawKind k);
 std::string_view to_string(IntegratorKind k);
 // One line on what each integrator is (for `ivv integrators`).
 std::string_view describe(IntegratorKind k);
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
-LawKind parse_law(const std::string& name, const std::string& field = "--law");
 IntegratorKind parse_integrator(const std::string& name, const std::string& field = "--integrator");
-
-// Hunt-Crossley parameters (used only by LawKind::hunt_crossley).
-struct HuntCrossleyParameters {
-  std::optional<double> K;  // [N/m^1.5]; default: the scene's Hertz stiffness K_h
-  double mu = 0.0;          // [s/m]
-};
 
 struct SimulationRequest {
   Scene scene;
   LawKind law = LawKind::elastoplastic;
   IntegratorKind integrator = IntegratorKind::odeint_dopri5;
   IntegratorOptions options;
-  HuntCrossleyParameters hunt_crossley;
+  LawParameters parameters;      // the law's --param values (law_info(law).parameters)
+  ExpressionLawSpec expression;  // law == LawKind::expression: the typed law
 };
 
 // One sample of the trajectory (SI and the normalised variables of paper eq. 26).
@@ -66,5 +61,7 @@ ImpactResult simulate(const SimulationRequest& request,
 
 // Throws InputError for invalid options or an incompatible combination.
 void validate(const SimulationRequest& request);
+// Throws InputError naming the option (--rtol, --atol, --dt, --max-steps) when out of range.
+void validate(const IntegratorOptions& options);
 
 }  // namespace ivv

@@ -3,13 +3,13 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
+#include <string>
 
 #include "solver/impact_driver.h"
 #include "solver/impact_system.h"
-#include "solver/laws/elastoplastic.h"
-#include "solver/laws/hertz.h"
-#include "solver/laws/hunt_crossley.h"
-#include "solver/laws/linearized.h"
+#include "solver/law_registry.h"
+#include "solver/laws/expression.h"
 #include "solver/simulate.h"
 
 namespace ivv::detail {
@@ -78,10 +78,10 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
 }
 
 template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
-ImpactResult run_typed(const Law& law, const SimulationRequest& req, const DerivedParameters& p,
-                       std::vector<TrajectoryPoint>* trajectory) {
+ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptions& options,
+                       const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
   using System = ImpactSystem<Law, Dashpot, T>;
-  const Scales k = scales(req.scene, p);
+  const Scales k = scales(scene, p);
   System sys;
   sys.law = law;
   sys.length = k.length;
@@ -93,6 +93,7 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
     observer = [trajectory, k](double tau, const typename System::state_type& x, const System& s) {
       auto d = [](const auto& v) { return static_cast<double>(v); };
       const double F = d(s.force(x));
+      const double shown = s.tension ? F : std::max(0.0, F);  // clamped unless tension
       TrajectoryPoint pt;
       pt.tau = tau;
       pt.t = tau * k.time;
@@ -100,40 +101,70 @@ ImpactResult run_typed(const Law& law, const SimulationRequest& req, const Deriv
       pt.alpha_dot = d(x[System::W]) * k.velocity;
       pt.y = d(s.y(x)) * k.length;
       pt.z = d(s.z(x)) * k.length;
-      pt.force = std::max(0.0, F) * k.force;
+      pt.force = shown * k.force;
       pt.alpha_bar = d(x[System::A]);
-      pt.force_bar = std::max(0.0, F);
+      pt.force_bar = shown;
       trajectory->push_back(pt);
     };
   }
-  const auto run = run_impact<Stepper<System>>(sys, req.options, trajectory ? &observer : nullptr);
-  return to_physical(run, sys, req.scene, p);
+  const auto run = run_impact<Stepper<System>>(sys, options, trajectory ? &observer : nullptr);
+  return to_physical(run, sys, scene, p);
+}
+
+// One impact of `law` with stepper `Stepper` on scalar T: the dashpot (or its absence) chosen
+// once here. A law that does not run on T (an expression law in the 50-digit reference) is a
+// failed result that says so, never a compile error.
+template <template <class> class Stepper, class T = double, class Law>
+ImpactResult run_law(const Law& law, const Scene& scene, const IntegratorOptions& options,
+                     const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
+  if constexpr (!law_supports_scalar<Law, T>) {
+    ImpactResult r;
+    r.failure = FailureKind::law_domain;
+    r.reason = std::string("the ") + std::string(Law::name) +
+               " law runs in double precision only, so the 50-digit reference (mp50) cannot "
+               "run it; compare with the tightest double-precision integrator instead";
+    return r;
+  } else if constexpr (Law::rate_dependent) {
+    return run_typed<Stepper, Law, false, T>(law, scene, options, p, trajectory);
+  } else {
+    return p.has_dashpot() ? run_typed<Stepper, Law, true, T>(law, scene, options, p, trajectory)
+                           : run_typed<Stepper, Law, false, T>(law, scene, options, p, trajectory);
+  }
+}
+
+// The expression law of a request, compiled (throws ExpressionError for a malformed one).
+std::shared_ptr<const CompiledExpressions> compile_expression_law(const SimulationRequest& req,
+                                                                  const DerivedParameters& p);
+
+// Runs the expression law and turns a non-finite evaluation into a failure naming it.
+template <class F>
+ImpactResult run_expression_law(const SimulationRequest& req, const DerivedParameters& p, F&& run) {
+  const auto compiled = compile_expression_law(req, p);
+  const bool tension = req.expression.allow_tension;
+  ImpactResult r;
+  try {
+    r = compiled->uses_rate() ? run(ExpressionLaw<true>{compiled, tension})
+                              : run(ExpressionLaw<false>{compiled, tension});
+  } catch (const std::exception&) {
+    // a NaN force reaches the root finders, which throw: the NaN is the reason to report
+    if (!compiled->non_finite()) throw;
+  }
+  if (compiled->non_finite()) {
+    r.status = ImpactStatus::failed;
+    r.failure = FailureKind::law_domain;
+    r.reason = *compiled->non_finite();
+  }
+  return r;
 }
 
 template <template <class> class Stepper, class T = double>
 ImpactResult simulate_with(const SimulationRequest& req, const DerivedParameters& p,
                            std::vector<TrajectoryPoint>* trajectory) {
-  const bool dashpot = p.has_dashpot();
-  auto dispatch = [&](const auto& law) {
-    using Law = std::decay_t<decltype(law)>;
-    if constexpr (Law::rate_dependent) {
-      return run_typed<Stepper, Law, false, T>(law, req, p, trajectory);
-    } else {
-      return dashpot ? run_typed<Stepper, Law, true, T>(law, req, p, trajectory)
-                     : run_typed<Stepper, Law, false, T>(law, req, p, trajectory);
-    }
+  auto run = [&](const auto& law) {
+    return run_law<Stepper, T>(law, req.scene, req.options, p, trajectory);
   };
-  switch (req.law) {
-    case LawKind::hertz:
-      return dispatch(HertzLaw{p.K_h});
-    case LawKind::elastoplastic:
-      return dispatch(ElastoplasticLaw{p.K_h, p.z_y, p.K_y});
-    case LawKind::linearized:
-      return dispatch(LinearizedLaw{p.K_h, p.K_y});
-    case LawKind::hunt_crossley:
-      return dispatch(HuntCrossleyLaw{req.hunt_crossley.K.value_or(p.K_h), req.hunt_crossley.mu});
-  }
-  return {};
+  if (req.law == LawKind::expression) return run_expression_law(req, p, run);
+  return with_builtin_law(req.law, req.parameters, p, run);
 }
 
 // Defined in integrators_*.cc, one per integrator.

@@ -11,6 +11,7 @@ const Registry& all_cases() {
     register_convergence_cases(reg);
     register_stability_cases(reg);
     register_published_trend_cases(reg);
+    register_example_cases(reg);
     return reg;
   }();
   return registry;

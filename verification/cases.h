@@ -11,5 +11,6 @@ void register_conservation_cases(Registry& reg);
 void register_convergence_cases(Registry& reg);
 void register_stability_cases(Registry& reg);
 void register_published_trend_cases(Registry& reg);
+void register_example_cases(Registry& reg);
 
 }  // namespace ivv::verification

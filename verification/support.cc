@@ -71,12 +71,19 @@ SimulationRequest request(const Scene& s, LawKind law, IntegratorKind integrator
   r.integrator = integrator;
   if (law == LawKind::hunt_crossley) {
     r.scene.damping = Damping::none();
-    r.hunt_crossley.mu = hc_mu;
+    r.parameters["mu"] = hc_mu;
   }
   return r;
 }
 
 namespace {
+std::string parameters_key(const LawParameters& params) {
+  std::ostringstream os;
+  os << std::setprecision(17);
+  for (const auto& [name, value] : params) os << name << '=' << value << ';';
+  return os.str();
+}
+
 std::string key(const SimulationRequest& r) {
   std::ostringstream os;
   os << std::setprecision(17) << r.scene.mass << ' ' << r.scene.radius << ' '
@@ -84,7 +91,8 @@ std::string key(const SimulationRequest& r) {
      << r.scene.target_youngs_modulus << ' ' << r.scene.target_poisson_ratio << ' '
      << r.scene.yield_strength << ' ' << static_cast<int>(r.scene.damping.kind) << ' '
      << r.scene.damping.value << ' ' << r.scene.velocity << ' ' << static_cast<int>(r.law) << ' '
-     << r.hunt_crossley.K.value_or(0) << ' ' << r.hunt_crossley.mu;
+     << parameters_key(r.parameters) << ' ' << r.expression.force << ' ' << r.expression.unload
+     << ' ' << r.expression.allow_tension;
   return os.str();
 }
 }  // namespace

@@ -6,16 +6,24 @@
 // the coefficient of restitution without a dashpot is exactly 1.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "solver/law.h"
+#include "solver/law_parameters.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct HertzLaw {
   static constexpr std::string_view name = "hertz";
   static constexpr bool rate_dependent = false;
+  static constexpr std::string_view summary =
+      "F = K_h z^{3/2} (Hertz, elastic; paper eq. 5, Johnson 1985 §4.2)";
+  static constexpr std::array<ParameterSpec, 0> parameters{};
+  static HertzLaw make(const LawParameters&, const DerivedParameters& p) { return {p.K_h}; }
 
   double K_h = 0.0;  // [N/m^1.5]
 

@@ -8,16 +8,32 @@
 // formula; the loop area is not known in closed form, so the energy ledger integrates it.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "solver/law.h"
+#include "solver/law_parameters.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct HuntCrossleyLaw {
   static constexpr std::string_view name = "hunt-crossley";
   static constexpr bool rate_dependent = true;
+  static constexpr std::string_view summary =
+      "F = K z^{3/2} (1 + mu dz/dt), no series dashpot (paper eq. 27; Hunt & Crossley 1975)";
+  static constexpr std::array<ParameterSpec, 2> parameters{{
+      {"K", "N/m^1.5", "stiffness (default: the scene's Hertz stiffness K_h)",
+       std::numeric_limits<double>::quiet_NaN(), 0.0, std::numeric_limits<double>::infinity(),
+       true},
+      {"mu", "s/m", "damping factor (default 0: Hertz)", 0.0, 0.0,
+       std::numeric_limits<double>::infinity(), false},
+  }};
+  static HuntCrossleyLaw make(const LawParameters& given, const DerivedParameters& p) {
+    return {parameter_value(given, parameters[0], p.K_h), parameter_value(given, parameters[1])};
+  }
 
   double K = 0.0;   // [N/m^1.5]
   double mu = 0.0;  // [s/m]

@@ -41,7 +41,7 @@ TEST(Hertz, ContinuationBelowZeroIsOddSoSeparationIsASignChange) {
 TEST(Elastoplastic, KinkAtYieldIsContinuousWithMatchingSlope) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
-  Branch<double> b;
+  ElastoplasticLaw::History<double> b;
   ASSERT_EQ(*law.segment_end(b), p.z_y);
   const double hertz_at_yield = law.force(b, p.z_y, 0.0);
   const double hertz_slope = law.stiffness(b, p.z_y, 0.0);
@@ -55,7 +55,7 @@ TEST(Elastoplastic, KinkAtYieldIsContinuousWithMatchingSlope) {
 TEST(Elastoplastic, UnloadingStartsAtPeakForceAndEndsAtPermanentSet) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
-  Branch<double> b;
+  ElastoplasticLaw::History<double> b;
   law.next_segment(b);
   const double z_m = 5 * p.z_y;
   const double F_m = law.force(b, z_m, 0.0);
@@ -72,7 +72,7 @@ TEST(Elastoplastic, UnloadingStartsAtPeakForceAndEndsAtPermanentSet) {
 TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
-  Branch<double> b;
+  ElastoplasticLaw::History<double> b;
   law.next_segment(b);
   const double z_m = 3 * p.z_y;
   law.begin_unloading(b, z_m);
@@ -83,9 +83,9 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
     for (int i = 1; i < n; ++i) s += f(a + i * h) * (i % 2 ? 4 : 2);
     return s * h / 3;
   };
-  Branch<double> load;
+  ElastoplasticLaw::History<double> load;
   auto loading = [&](double z) {
-    Branch<double> lb = load;
+    ElastoplasticLaw::History<double> lb = load;
     if (z > p.z_y) lb.segment = 1;
     return law.force(lb, z, 0.0);
   };
@@ -99,7 +99,7 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
 TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
-  Branch<double> b;
+  ElastoplasticLaw::History<double> b;
   law.begin_unloading(b, 0.5 * p.z_y);
   EXPECT_EQ(b.z_perm, 0.0);
   EXPECT_EQ(*law.hysteresis_work(b), 0.0);
@@ -111,7 +111,7 @@ TEST(Linearized, SecantUnloadingMatchesEquations16To18) {
   const DerivedParameters p = paper();
   const LinearizedLaw law{p.K_h, p.K_y};
   EXPECT_NEAR(law.minimum_z_max(), 2.25 * p.z_y, kAlgebra * p.z_y);
-  Branch<double> b;
+  LinearizedLaw::History<double> b;
   const double z_m = 10 * p.z_y;
   EXPECT_EQ(law.force(b, z_m, 0.0), p.K_y * z_m);  // eq. 15
   law.begin_unloading(b, z_m);
@@ -131,17 +131,17 @@ TEST(Linearized, SecantUnloadingMatchesEquations16To18) {
 TEST(Linearized, UndefinedBelowTwoAndAQuarterYieldDeformations) {
   const DerivedParameters p = paper();
   const LinearizedLaw law{p.K_h, p.K_y};
-  Branch<double> b;
+  LinearizedLaw::History<double> b;
   try {
     law.begin_unloading(b, 2.0 * p.z_y);
     FAIL() << "no domain error";
   } catch (const LawDomainError& e) {
     EXPECT_NE(std::string(e.what()).find("2.25 z_y"), std::string::npos) << e.what();
   }
-  Branch<double> edge;
+  LinearizedLaw::History<double> edge;
   law.begin_unloading(edge, law.minimum_z_max());  // exactly at the boundary: elastic unloading
   EXPECT_NEAR(edge.z_perm, 0.0, 1e-6 * p.z_y);
-  EXPECT_TRUE(std::isfinite(edge.coef));
+  EXPECT_TRUE(std::isfinite(edge.unloading_stiffness));
 }
 
 TEST(HuntCrossley, DampingTermScalesWithVelocity) {
@@ -155,12 +155,47 @@ TEST(HuntCrossley, DampingTermScalesWithVelocity) {
   EXPECT_FALSE(law.hysteresis_work(b).has_value());  // integrated, not closed form
 }
 
-// Every law models the ContactLaw concept: checked by the compiler (a law that does not fails
-// the build of this file), so no run-time test is needed for it.
+// The concept is checked at compile time; these assertions are the test (a law that stops
+// modelling it breaks the build of this file).
 static_assert(ContactLaw<HertzLaw>);
 static_assert(ContactLaw<ElastoplasticLaw>);
 static_assert(ContactLaw<LinearizedLaw>);
 static_assert(ContactLaw<HuntCrossleyLaw>);
+static_assert(law_supports_scalar<ElastoplasticLaw, long double>);
+static_assert(law_needs_yield_strength<ElastoplasticLaw>() &&
+              !law_needs_yield_strength<HertzLaw>());
+
+// A type that misses a member is not a ContactLaw, and the concept group that fails names it.
+struct NoStoredEnergy {
+  static constexpr std::string_view name = "broken";
+  static constexpr bool rate_dependent = false;
+  double force(const Branch<double>&, double z, double) const { return z; }
+  double stiffness(const Branch<double>&, double, double) const { return 1; }
+  double rate_stiffness(const Branch<double>&, double, double) const { return 0; }
+  std::optional<double> segment_end(const Branch<double>&) const { return std::nullopt; }
+  void next_segment(Branch<double>&) const {}
+  void begin_unloading(Branch<double>&, double) const {}
+};
+static_assert(law_has_force<NoStoredEnergy> && law_has_history<NoStoredEnergy>);
+static_assert(!law_has_energy<NoStoredEnergy> && !ContactLaw<NoStoredEnergy>);
+
+TEST(ContactLawHistory, EachLawNamesItsOwnUnloadingState) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw ep{p.K_h, p.z_y, p.K_y};
+  ElastoplasticLaw::History<double> h;
+  ep.next_segment(h);
+  const double z_m = 4 * p.z_y;
+  ep.begin_unloading(h, z_m);
+  // the offset is a force: F_m - K_h z_m^{3/2}
+  const double F_m = p.K_y * 3 * p.z_y + p.K_h * std::pow(p.z_y, 1.5);
+  EXPECT_NEAR(h.hertz_offset, F_m - p.K_h * std::pow(z_m, 1.5), kAlgebra * F_m);
+  const LinearizedLaw li{p.K_h, p.K_y};
+  LinearizedLaw::History<double> g;
+  li.begin_unloading(g, 10 * p.z_y);
+  // the unloading stiffness is the secant from (z_f, 0) to (z_m, K_y z_m)
+  const double secant = p.K_y * 10 * p.z_y / (10 * p.z_y - g.z_perm);
+  EXPECT_NEAR(g.unloading_stiffness, secant, kAlgebra * secant);
+}
 
 }  // namespace
 }  // namespace ivv

@@ -10,17 +10,33 @@
 // LawDomainError saying so (never NaN).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "solver/law.h"
+#include "solver/law_parameters.h"
+#include "solver/scene.h"
 
 namespace ivv {
 
 struct LinearizedLaw {
   static constexpr std::string_view name = "linearized";
   static constexpr bool rate_dependent = false;
+  static constexpr bool needs_yield_strength = true;
+  static constexpr std::string_view summary =
+      "F = K_y z, secant unloading to z_f (paper eqs 15-18; undefined below z_m = 2.25 z_y)";
+  static constexpr std::array<ParameterSpec, 0> parameters{};
+  static LinearizedLaw make(const LawParameters&, const DerivedParameters& p) {
+    return {p.K_h, p.K_y};
+  }
+
+  template <class T>
+  struct History : Branch<T> {
+    T unloading_stiffness = 0;  // K_y / gamma^2 [N/m]
+  };
 
   double K_h = 0.0;  // [N/m^1.5]
   double K_y = 0.0;  // [N/m]
@@ -28,29 +44,27 @@ struct LinearizedLaw {
   // Smallest z_m for which the law is defined, (K_y/K_h)^2 [m] (= 2.25 z_y).
   double minimum_z_max() const { return (K_y / K_h) * (K_y / K_h); }
 
-  // coef = K_y / gamma^2 on unloading.
   template <class T>
-  T force(const Branch<T>& b, const T& z, const T&) const {
+  T force(const History<T>& b, const T& z, const T&) const {
     if (b.phase == Phase::loading) return K_y * z;
-    return b.coef * (z - b.z_perm);
+    return b.unloading_stiffness * (z - b.z_perm);
   }
   template <class T>
-  T stiffness(const Branch<T>& b, const T&, const T&) const {
-    return b.phase == Phase::loading ? T(K_y) : b.coef;
+  T stiffness(const History<T>& b, const T&, const T&) const {
+    return b.phase == Phase::loading ? T(K_y) : b.unloading_stiffness;
   }
   template <class T>
-  T rate_stiffness(const Branch<T>&, const T&, const T&) const {
+  T rate_stiffness(const History<T>&, const T&, const T&) const {
     return T(0);
   }
   template <class T>
-  std::optional<double> segment_end(const Branch<T>&) const {
+  std::optional<double> segment_end(const History<T>&) const {
     return std::nullopt;
   }
   template <class T>
-  void next_segment(Branch<T>&) const {}
+  void next_segment(History<T>&) const {}
   template <class T>
-  void begin_unloading(Branch<T>& b, const T& z_m) const {
-    using std::cbrt;
+  void begin_unloading(History<T>& b, const T& z_m) const {
     using std::sqrt;
     const T ratio = K_y / (K_h * sqrt(z_m));
     if (!(ratio <= 1)) {
@@ -64,17 +78,17 @@ struct LinearizedLaw {
     const T s = 1 - ratio;
     b.phase = Phase::unloading;
     b.z_max = z_m;
-    b.z_perm = z_m * cbrt(s * s);
+    b.z_perm = z_m * cube_root(T(s * s));
     const T gamma2 = 1 - b.z_perm / z_m;
-    b.coef = K_y / gamma2;
+    b.unloading_stiffness = K_y / gamma2;
   }
   template <class T>
-  T stored_energy(const Branch<T>& b, const T& z) const {
+  T stored_energy(const History<T>& b, const T& z) const {
     if (b.phase == Phase::loading) return 0.5 * K_y * z * z;
-    return z > b.z_perm ? T(0.5 * b.coef * (z - b.z_perm) * (z - b.z_perm)) : T(0);
+    return z > b.z_perm ? T(0.5 * b.unloading_stiffness * (z - b.z_perm) * (z - b.z_perm)) : T(0);
   }
   template <class T>
-  std::optional<double> hysteresis_work(const Branch<T>& b) const {
+  std::optional<double> hysteresis_work(const History<T>& b) const {
     const double z_m = static_cast<double>(b.z_max);
     return 0.5 * K_y * z_m * z_m - static_cast<double>(stored_energy(b, b.z_max));
   }

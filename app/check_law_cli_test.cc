@@ -1,0 +1,131 @@
+// `ivv check-law` and the expression-law flags of `ivv simulate`, as a contact-law author
+// meets them: verdicts and exit codes, the JSON contract, errors with a caret, the report.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code;
+  std::string out, err;
+};
+
+CliRun ivv(const std::string& args) {
+  const fs::path err_file =
+      fs::temp_directory_path() / ("ivv_check_law_test_" + std::to_string(getpid()));
+  const std::string cmd = std::string(IVV_BINARY) + " " + args + " 2>" + err_file.string();
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  std::ifstream in(err_file);
+  std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove(err_file);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err};
+}
+
+TEST(CheckLaw, HertzExpressionPassesOnThePaperScene) {
+  const CliRun r = ivv("check-law --force 'K_h*z^1.5' --scene paper");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("PASS"), std::string::npos) << r.out;
+}
+
+TEST(CheckLaw, KelvinVoigtFailsAtOnsetWithExitOne) {
+  const CliRun r = ivv("check-law --force 'k*z + c*zdot' --param k=4e6 --param c=11440");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("FAIL  static.onset"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("jumps at impact"), std::string::npos) << r.out;
+}
+
+TEST(CheckLaw, MalformedExpressionExitsTwoWithACaret) {
+  const CliRun r = ivv("check-law --force 'K_h*z^(1.5'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("    K_h*z^(1.5\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find('^'), std::string::npos) << r.err;
+}
+
+TEST(CheckLaw, UnknownVariableIsNamed) {
+  const CliRun r = ivv("check-law --force 'K_h*z^1.5*(1 + mu*zdot)'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown variable 'mu'"), std::string::npos) << r.err;
+}
+
+TEST(CheckLaw, JsonHasTheContractKeysAndTheClaimIsJudged) {
+  // Hunt-Crossley with the Gonthier map at e = 0.5 (mu v0 = (1 - e^2)/e = 1.5) delivers 0.48774
+  const CliRun r =
+      ivv("check-law --force 'K_h*z^1.5*(1 + u/v0*zdot)' --param u=1.5 "
+          "--expect-cor 0.5 --json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["verdict"], "fail");
+  EXPECT_EQ(j["law"]["force"], "K_h*z^1.5*(1 + u/v0*zdot)");
+  bool found = false;
+  for (const auto& c : j["checks"]) {
+    for (const char* key : {"id", "passed", "measured", "reference", "tolerance", "why", "detail"})
+      EXPECT_TRUE(c.contains(key)) << key;
+    if (c["id"] == "dynamic.expected_cor") {
+      found = true;
+      EXPECT_FALSE(c["passed"].get<bool>());
+      // the exact Lambert-W COR for u0 = 1.5 is 0.4877413 (oracles/hunt_crossley.h)
+      EXPECT_NEAR(c["measured"].get<double>(), 0.5 - 0.48774126, 1e-6);
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(CheckLaw, ReportWritesASelfContainedPage) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("ivv_check_law_report_" + std::to_string(getpid()));
+  const CliRun r = ivv("check-law --force 'K_h*z^1.5' --report " + dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir / "index.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("static.onset"), std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "results.json"));
+  fs::remove_all(dir);
+}
+
+TEST(CheckLaw, SimulateWithTheSameEquationGivesTheBuiltInCor) {
+  const CliRun builtin = ivv("simulate --scene paper --v0 1 --c 11440 --law hertz --json");
+  const CliRun typed = ivv("simulate --scene paper --v0 1 --c 11440 --force 'K_h*z^1.5' --json");
+  ASSERT_EQ(builtin.exit_code, 0) << builtin.err;
+  ASSERT_EQ(typed.exit_code, 0) << typed.err;
+  const double a = nlohmann::json::parse(builtin.out)["result"]["e"];
+  const double b = nlohmann::json::parse(typed.out)["result"]["e"];
+  // default rtol 1e-10 over N <= 1000 steps: global error <= 1e-7 in e for each
+  EXPECT_NEAR(a, b, 1e-7);
+  EXPECT_EQ(nlohmann::json::parse(typed.out)["request"]["law"], "expression");
+}
+
+TEST(CheckLaw, ForceAndLawTogetherAreBadInput) {
+  const CliRun r = ivv("simulate --scene paper --law hertz --force 'K_h*z^1.5'");
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+TEST(CheckLaw, HcMuWithAnotherLawIsBadInput) {
+  const CliRun r = ivv("simulate --scene paper --law hertz --hc-mu 0.3");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--hc-mu"), std::string::npos) << r.err;
+}
+
+TEST(CheckLaw, ParameterOfALawThatHasNoneIsNamed) {
+  const CliRun r = ivv("simulate --scene paper --law hertz --param mu=0.3");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--param mu"), std::string::npos) << r.err;
+}
+
+}  // namespace

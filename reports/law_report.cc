@@ -1,0 +1,86 @@
+#include "reports/law_report.h"
+
+#include <system_error>
+
+#include "reports/gnuplot_svg.h"
+#include "reports/html.h"
+#include "solver/atomic_file.h"
+#include "solver/input_error.h"
+
+namespace ivv::reports {
+
+namespace fs = std::filesystem;
+
+std::string law_section_html(const conformance::Report& report, const std::string& anchor,
+                             const std::string& intro_html, const PlacePlot& place) {
+  std::string html =
+      "<section id=\"" + slug(anchor) + "\">\n<h3>" + escape(report.law) + " — " +
+      (report.passed() ? "<span class=\"pass\">PASS</span>" : "<span class=\"fail\">FAIL</span>") +
+      "</h3>\n<p>" + escape(report.description) + "</p>\n" + intro_html;
+  std::vector<std::vector<std::string>> rows;
+  for (const conformance::Check& c : report.checks) {
+    rows.push_back(
+        {escape(c.id),
+         c.passed ? "<span class=\"pass\">pass</span>" : "<span class=\"fail\">FAIL</span>",
+         number_html(c.measured), number_html(c.reference), number_html(c.tolerance),
+         escape(c.detail) + "<br><small>why this tolerance: " + escape(c.why) + "</small>"});
+  }
+  html +=
+      table({"check", "verdict", "measured", "reference", "tolerance", "what was measured"}, rows);
+  if (!report.not_applicable.empty()) {
+    html += "<p>Not applicable to this law:</p>\n<ul>\n";
+    for (const auto& [id, why] : report.not_applicable)
+      html += "<li><code>" + escape(id) + "</code>: " + escape(why) + "</li>\n";
+    html += "</ul>\n";
+  }
+  for (verification::Plot plot : report.plots()) {
+    plot.id = slug(anchor + "-" + plot.id);
+    const std::string caption =
+        " Coefficient of restitution of the reference runs (measured) over the velocity grid" +
+        std::string(report.cor.empty() || !report.cor.front().expected
+                        ? ""
+                        : ", with the COR the law claims (dashed)") +
+        ".";
+    if (place) {
+      html += place(plot, caption);
+      continue;
+    }
+    try {
+      html += "<figure>" + render_svg(plot, plot.id) + "<figcaption>" + caption +
+              "</figcaption></figure>\n";
+    } catch (const std::exception& e) {
+      html += "<p class=\"fail\">plot " + escape(plot.id) +
+              " could not be drawn: " + escape(e.what()) + "</p>\n";
+    }
+  }
+  return html + "</section>\n";
+}
+
+void check_report_dir(const fs::path& dir) {
+  if (dir.empty()) throw InputError("--report", "a directory is required");
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError("--report", "'" + dir.string() + "' exists and is not a directory");
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError("--report", "cannot create the directory '" + dir.string() + "'");
+}
+
+fs::path write_law_report(const conformance::Report& report, const fs::path& dir,
+                          const std::string& command_line) {
+  check_report_dir(dir);
+  const std::string body = "<h1>Contact-law conformance: " + escape(report.law) + "</h1>\n<p>" +
+                           escape(report.brief()) + "</p>\n<p><small>command: <code>" +
+                           escape(command_line) + "</code></small></p>\n" +
+                           law_section_html(report, "law") +
+                           "<p>Machine-readable: <a href=\"results.json\">results.json</a>.</p>";
+  const fs::path index = dir / "index.html";
+  write_file_atomically(dir / "results.json", [&](std::ostream& out) {
+    out << conformance::to_json(report).dump(2) << "\n";
+  });
+  write_file_atomically(
+      index, [&](std::ostream& out) { out << page("ivv check-law: " + report.law, body); });
+  return index;
+}
+
+}  // namespace ivv::reports

@@ -1,0 +1,241 @@
+#include "solver/laws/expression.h"
+
+#include <muParser.h>
+
+#include <boost/math/quadrature/gauss.hpp>
+#include <cctype>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace ivv {
+namespace {
+
+std::string caret_message(const std::string& expression, int position, const std::string& what) {
+  std::ostringstream os;
+  os << what << "\n    " << expression << "\n    ";
+  if (position >= 0) os << std::string(static_cast<std::size_t>(position), ' ') << '^';
+  return os.str();
+}
+
+// Position of identifier `name` as a whole token in `text`, or -1.
+int token_position(const std::string& text, const std::string& name) {
+  auto is_ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    const bool starts = at == 0 || !is_ident(text[at - 1]);
+    const bool ends = at + name.size() >= text.size() || !is_ident(text[at + name.size()]);
+    if (starts && ends) return static_cast<int>(at);
+  }
+  return -1;
+}
+
+// Thrown by the variable factory, which muParser calls for a name it does not know.
+struct UnknownName {
+  std::string name;
+};
+double* reject_unknown_name(const char* name, void*) {
+  throw UnknownName{name};
+}
+
+using Constants = std::vector<std::pair<std::string, double>>;
+
+// Defines variables and constants, parses `text` and evaluates it once (syntax errors and
+// unknown names surface here, not mid-run). Returns whether `rate_variable` is used.
+bool setup_parser(mu::Parser& parser, const std::string& text, const std::string& field,
+                  const std::vector<std::pair<std::string, double*>>& variables,
+                  const Constants& constants, const std::string& known,
+                  const std::string& rate_variable) {
+  try {
+    for (const auto& [name, slot] : variables) parser.DefineVar(name, slot);
+    for (const auto& [name, value] : constants) parser.DefineConst(name, value);
+    parser.SetVarFactory(reject_unknown_name, nullptr);
+    parser.SetExpr(text);
+    parser.Eval();
+  } catch (const UnknownName& u) {
+    throw ExpressionError(field, text, token_position(text, u.name),
+                          "unknown variable '" + u.name + "' (known: " + known + ")");
+  } catch (const mu::Parser::exception_type& e) {
+    throw ExpressionError(field, text, e.GetPos(), e.GetMsg());
+  }
+  return parser.GetUsedVar().count(rate_variable) > 0;
+}
+
+// The scene's constants (z_y, K_y only where the scene defines them) and the parameters,
+// checked against the reserved names.
+Constants scene_constants(const Scene& scene, const DerivedParameters& p,
+                          const LawParameters& parameters, const std::set<std::string>& reserved) {
+  Constants constants = {{"m", scene.mass},
+                         {"R", scene.radius},
+                         {"E_star", p.E_star},
+                         {"K_h", p.K_h},
+                         {"v0", scene.velocity}};
+  if (std::isfinite(p.z_y) && p.z_y > 0) {
+    constants.push_back({"z_y", p.z_y});
+    constants.push_back({"K_y", p.K_y});
+  }
+  std::set<std::string> taken = reserved;
+  for (const auto& c : constants) taken.insert(c.first);
+  for (const auto& [name, value] : parameters) {
+    if (taken.count(name))
+      throw InputError("--param " + name,
+                       "'" + name + "' is already a variable or scene constant of expression laws");
+    bool ident =
+        !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+    for (char c : name) ident = ident && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+    if (!ident)
+      throw InputError("--param " + name,
+                       "a parameter name is letters, digits and _, not starting with a digit");
+    if (!std::isfinite(value)) throw InputError("--param " + name, "must be a finite number");
+    constants.push_back({name, value});
+  }
+  return constants;
+}
+
+std::string known_names(const std::string& variables, const Constants& constants) {
+  std::string known = "variables " + variables + "; constants";
+  for (const auto& c : constants) known += " " + c.first;
+  return known;
+}
+
+}  // namespace
+
+ExpressionError::ExpressionError(std::string field, const std::string& expression, int position,
+                                 const std::string& what)
+    : InputError(std::move(field), caret_message(expression, position, what)),
+      position_(position) {}
+
+struct CompiledExpressions::Parsers {
+  mu::Parser load, unload;
+  double z = 0, zdot = 0, zmax = 0;
+  std::string known;  // the names an expression may use, for error messages
+};
+
+CompiledExpressions::CompiledExpressions(const ExpressionLawSpec& spec,
+                                         const LawParameters& parameters, const Scene& scene,
+                                         const DerivedParameters& p)
+    : parsers_(std::make_unique<Parsers>()), has_unload_(!spec.unload.empty()) {
+  if (spec.force.empty())
+    throw InputError("--force", "the expression law needs a force expression, e.g. 'K_h*z^1.5'");
+  Parsers& P = *parsers_;
+  const Constants constants = scene_constants(scene, p, parameters, {"z", "zdot", "zmax"});
+  // Hertz scales of the scene: z_ref = (5 m v0^2 / (4 K_h))^{2/5}, F_ref = K_h z_ref^{3/2}.
+  v_ref_ = scene.velocity;
+  z_ref_ = std::pow(5.0 * scene.mass * v_ref_ * v_ref_ / (4.0 * p.K_h), 0.4);
+  k_ref_ = p.K_h * std::sqrt(z_ref_);
+  P.known = known_names("z, zdot, zmax", constants);
+  const std::vector<std::pair<std::string, double*>> variables = {
+      {"z", &P.z}, {"zdot", &P.zdot}, {"zmax", &P.zmax}};
+  P.z = P.zmax = z_ref_;  // a point inside contact for the trial evaluation
+  P.zdot = v_ref_;
+  uses_rate_ = setup_parser(P.load, spec.force, "--force", variables, constants, P.known, "zdot");
+  if (has_unload_)
+    uses_rate_ =
+        setup_parser(P.unload, spec.unload, "--unload", variables, constants, P.known, "zdot") ||
+        uses_rate_;
+}
+
+CompiledExpressions::~CompiledExpressions() = default;
+
+double CompiledExpressions::evaluate(bool unload, double z, double zdot, double zmax) const {
+  if (z < 0) return evaluate(unload, 0.0, zdot, unload ? zmax : 0.0) + k_ref_ * z;
+  Parsers& P = *parsers_;
+  P.z = z;
+  P.zdot = zdot;
+  P.zmax = zmax;
+  double F;
+  try {
+    F = (unload && has_unload_ ? P.unload : P.load).Eval();
+  } catch (const mu::Parser::exception_type&) {
+    F = std::numeric_limits<double>::quiet_NaN();
+  }
+  if (!std::isfinite(F) && !non_finite_) {
+    std::ostringstream os;
+    os.precision(17);
+    os << (unload && has_unload_ ? "--unload" : "--force") << " evaluated to " << F
+       << " at z = " << z << " m, zdot = " << zdot << " m/s, zmax = " << zmax
+       << " m: the expression must be finite wherever contact can reach";
+    non_finite_ = os.str();
+  }
+  return F;
+}
+
+double CompiledExpressions::loading(double z, double zdot) const {
+  return evaluate(false, z, zdot, std::max(z, 0.0));
+}
+
+double CompiledExpressions::unloading(double z, double zdot, double zmax) const {
+  return evaluate(true, z, zdot, zmax);
+}
+
+template <bool Rate>
+double ExpressionLaw<Rate>::step(double scale, double at) {
+  // eps^{1/3} balances truncation O(d^2 F''') against rounding O(eps F / d)
+  // relative to |at| so that a difference near z = 0 does not reach across it
+  return std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1e-9 * scale, std::abs(at));
+}
+
+template <bool Rate>
+void ExpressionLaw<Rate>::begin_unloading(Branch<double>& h, double z_m) const {
+  h.phase = Phase::unloading;
+  h.z_max = z_m;
+  auto F = [&](double z) { return expr->unloading(z, 0.0, z_m); };
+  if (F(0.0) >= 0.0) {
+    h.z_perm = 0.0;
+    return;
+  }
+  if (F(z_m) <= 0.0) {
+    h.z_perm = z_m;
+    return;
+  }
+  // bisection to adjacent doubles: always converges (at most ~1100 halvings of [0, z_m])
+  double lo = 0.0, hi = z_m;
+  for (;;) {
+    const double mid = lo + 0.5 * (hi - lo);
+    if (mid <= lo || mid >= hi) break;
+    (F(mid) < 0.0 ? lo : hi) = mid;
+  }
+  h.z_perm = hi;
+}
+
+template <bool Rate>
+double ExpressionLaw<Rate>::stored_energy(const Branch<double>& h, double z) const {
+  const bool loading = h.phase == Phase::loading;
+  const double lo = loading ? 0.0 : h.z_perm;
+  if (!(z > lo)) return 0.0;
+  auto F = [&](double s) {
+    return std::max(0.0, loading ? expr->loading(s, 0.0) : expr->unloading(s, 0.0, h.z_max));
+  };
+  return boost::math::quadrature::gauss<double, 20>::integrate(F, lo, z);
+}
+
+std::function<double(double)> compile_cor_claim(const std::string& text,
+                                                const LawParameters& parameters,
+                                                const Scene& scene) {
+  struct Claim {
+    mu::Parser parser;
+    double v0 = 0;
+  };
+  auto claim = std::make_shared<Claim>();
+  Scene base = scene;
+  const DerivedParameters p = derive(base);
+  Constants constants = scene_constants(base, p, parameters, {"z", "zdot", "zmax"});
+  std::erase_if(constants, [](const auto& c) { return c.first == "v0"; });
+  claim->v0 = scene.velocity;
+  setup_parser(claim->parser, text, "--expect-cor", {{"v0", &claim->v0}}, constants,
+               known_names("v0", constants), "v0");
+  return [claim](double v0) {
+    claim->v0 = v0;
+    try {
+      return claim->parser.Eval();
+    } catch (const mu::Parser::exception_type&) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+  };
+}
+
+template struct ExpressionLaw<false>;
+template struct ExpressionLaw<true>;
+
+}  // namespace ivv

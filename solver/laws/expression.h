@@ -1,0 +1,134 @@
+// Expression contact law: a force law typed on the command line, parsed by muParser (SPEC §5).
+//
+//   loading     F = force (z, zdot, zmax = z)            until dz/dt = 0
+//   unloading   F = unload(z, zdot, zmax = z_m)          after it; default: the loading
+//                                                        expression with zmax held at z_m
+//
+// Variables: z [m] spring deformation, zdot [m/s] its rate, zmax [m] the largest z so far.
+// Constants of the scene: m [kg], R [m], E_star [Pa], K_h [N/m^1.5], v0 [m/s], and, when the
+// scene has a yield strength, z_y [m], K_y [N/m]. Every `--param NAME=VALUE` is a constant too.
+// muParser syntax: + - * / ^, sqrt, exp, log (natural), abs, min, max, `a < b ? x : y`.
+//
+// The force is clamped to F >= 0 by ending contact at F = 0 (paper eq. 3), unless
+// `allow_tension`: then F may go negative and contact ends at z = 0 (DEM codes that do not
+// clamp). Below z = 0, where a typed law like K_h*z^1.5 is undefined, the force is continued
+// linearly, F(0, zdot) + k_ref z with k_ref = F_ref/z_ref (the scene's Hertz scales), so a step
+// that overshoots separation stays finite and the end of contact is a sign change.
+//
+// The law runs in double only (no 50-digit reference). dF/dz and dF/dzdot are central
+// differences with step eps^{1/3} of the scale (relative error ~1e-10 where F is smooth); they
+// serve implicit integrators and the peak-force event, never a verdict. An expression that
+// evaluates to NaN or infinity inside contact is recorded and turns the impact into a failure
+// naming the expression, z and zdot.
+//
+// Not thread-safe: one compiled law per impact (muParser parsers are not thread-safe).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "solver/input_error.h"
+#include "solver/law.h"
+#include "solver/law_parameters.h"
+#include "solver/scene.h"
+
+namespace ivv {
+
+struct ExpressionLawSpec {
+  std::string force;   // loading force [N]; required for LawKind::expression
+  std::string unload;  // unloading force [N]; empty: the loading expression, zmax fixed
+  bool allow_tension = false;
+};
+
+// A malformed expression: the message shows the expression with a caret under the column
+// at fault (or names the unknown variable). Field "--force" or "--unload"; exit code 2.
+class ExpressionError : public InputError {
+ public:
+  ExpressionError(std::string field, const std::string& expression, int position,
+                  const std::string& what);
+  int position() const { return position_; }
+
+ private:
+  int position_;
+};
+
+// The parsed expressions with their variables; evaluation mutates the variable slots.
+class CompiledExpressions {
+ public:
+  // Throws ExpressionError for a syntax error or an unknown name, InputError for a --param
+  // that shadows a variable or constant.
+  CompiledExpressions(const ExpressionLawSpec& spec, const LawParameters& parameters,
+                      const Scene& scene, const DerivedParameters& p);
+  ~CompiledExpressions();
+  CompiledExpressions(const CompiledExpressions&) = delete;
+  CompiledExpressions& operator=(const CompiledExpressions&) = delete;
+
+  double loading(double z, double zdot) const;
+  double unloading(double z, double zdot, double zmax) const;
+  bool uses_rate() const { return uses_rate_; }
+  bool has_unloading_expression() const { return has_unload_; }
+  double length_scale() const { return z_ref_; }     // z_ref [m]
+  double stiffness_scale() const { return k_ref_; }  // k_ref [N/m]
+  double velocity_scale() const { return v_ref_; }   // v0 [m/s]
+  // The first NaN or infinity met inside contact, if any ("--force = nan at z = ..., ...").
+  const std::optional<std::string>& non_finite() const { return non_finite_; }
+
+ private:
+  double evaluate(bool unload, double z, double zdot, double zmax) const;
+  struct Parsers;
+  std::unique_ptr<Parsers> parsers_;
+  bool uses_rate_ = false;
+  bool has_unload_ = false;
+  double z_ref_ = 1.0, k_ref_ = 1.0, v_ref_ = 1.0;
+  mutable std::optional<std::string> non_finite_;
+};
+
+// The law handed to the driver. Rate: whether the expressions use zdot (then the law carries
+// its own damping and runs without the series dashpot, like Hunt-Crossley).
+template <bool Rate>
+struct ExpressionLaw {
+  static constexpr std::string_view name = "expression";
+  static constexpr bool rate_dependent = Rate;
+
+  std::shared_ptr<const CompiledExpressions> expr;
+  bool allows_tension = false;
+
+  double force(const Branch<double>& h, double z, double v) const {
+    return h.phase == Phase::loading ? expr->loading(z, v) : expr->unloading(z, v, h.z_max);
+  }
+  double stiffness(const Branch<double>& h, double z, double v) const {
+    const double d = step(expr->length_scale(), z);
+    return (force(h, z + d, v) - force(h, z - d, v)) / (2 * d);
+  }
+  double rate_stiffness(const Branch<double>& h, double z, double v) const {
+    if constexpr (!Rate) return 0.0;
+    const double d = step(expr->velocity_scale(), v);
+    return (force(h, z, v + d) - force(h, z, v - d)) / (2 * d);
+  }
+  std::optional<double> segment_end(const Branch<double>&) const { return std::nullopt; }
+  void next_segment(Branch<double>&) const {}
+  // Records z_m and the permanent set z_f: the zero of the unloading force in [0, z_m] at
+  // zdot = 0 (0 when the unloading force is positive down to z = 0).
+  void begin_unloading(Branch<double>& h, double z_m) const;
+  // int_{z_f}^{z} max(F_unload(s, 0), 0) ds (20-point Gauss-Legendre; loading: from 0).
+  double stored_energy(const Branch<double>& h, double z) const;
+  std::optional<double> hysteresis_work(const Branch<double>&) const { return std::nullopt; }
+
+ private:
+  static double step(double scale, double at);
+};
+
+// The COR a law claims, as an expression in v0 [m/s], the scene's constants and the law's
+// parameters (`--expect-cor`). Throws ExpressionError("--expect-cor", ...) when malformed. The
+// function is not thread-safe (it owns one parser).
+std::function<double(double)> compile_cor_claim(const std::string& text,
+                                                const LawParameters& parameters,
+                                                const Scene& scene);
+
+extern template struct ExpressionLaw<false>;
+extern template struct ExpressionLaw<true>;
+
+}  // namespace ivv

@@ -1,0 +1,196 @@
+// Expression contact laws: parsing and its errors, evaluation against the built-in laws,
+// the continuation below z = 0, history, failures that name the expression, tension.
+#include "solver/laws/expression.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/laws/elastoplastic.h"
+#include "solver/laws/hertz.h"
+#include "solver/simulate.h"
+
+namespace ivv {
+namespace {
+
+// Closed-form algebra in double: a few ulps of the largest term.
+constexpr double kAlgebra = 1e-12;
+
+std::shared_ptr<const CompiledExpressions> compile(const std::string& force,
+                                                   const std::string& unload = "",
+                                                   const LawParameters& params = {}) {
+  const Scene s = paper_scene();
+  return std::make_shared<const CompiledExpressions>(ExpressionLawSpec{force, unload, false},
+                                                     params, s, derive(s));
+}
+
+TEST(ExpressionLaw, SyntaxErrorPointsAtTheColumn) {
+  try {
+    compile("K_h**z^1.5");
+    FAIL() << "accepted a malformed expression";
+  } catch (const ExpressionError& e) {
+    EXPECT_EQ(e.field(), "--force");
+    EXPECT_EQ(e.position(), 4);
+    const std::string msg = e.what();
+    // the expression, then a caret under column 4 (both indented by four spaces)
+    EXPECT_NE(msg.find("\n    K_h**z^1.5\n        ^"), std::string::npos) << msg;
+  }
+}
+
+TEST(ExpressionLaw, UnknownVariableIsNamedWithItsColumn) {
+  try {
+    compile("K_h*z^1.5", "K_h*(z^1.5 - zmx^1.5)");
+    FAIL() << "accepted an unknown variable";
+  } catch (const ExpressionError& e) {
+    EXPECT_EQ(e.field(), "--unload");
+    EXPECT_EQ(e.position(), 13);
+    EXPECT_NE(std::string(e.what()).find("unknown variable 'zmx'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExpressionLaw, ParameterMayNotShadowAVariableOrConstant) {
+  EXPECT_THROW(compile("k*z", "", {{"z", 1.0}}), InputError);
+  EXPECT_THROW(compile("k*z", "", {{"K_h", 1.0}}), InputError);
+  EXPECT_THROW(compile("k*z", "", {{"2k", 1.0}}), InputError);
+  EXPECT_NO_THROW(compile("k*z", "", {{"k", 1e6}}));
+}
+
+TEST(ExpressionLaw, HertzExpressionEqualsTheHertzLaw) {
+  const auto expr = compile("K_h*z^1.5");
+  EXPECT_FALSE(expr->uses_rate());
+  const ExpressionLaw<false> law{expr, false};
+  const HertzLaw hertz{derive(paper_scene()).K_h};
+  Branch<double> h;
+  for (double z : {1e-7, 3e-6, 4e-5}) {
+    const double ref = hertz.force(h, z, 0.0);
+    EXPECT_NEAR(law.force(h, z, 0.0), ref, kAlgebra * ref);
+    // central difference: relative error ~ eps^{2/3} ~ 4e-11 where F is smooth
+    EXPECT_NEAR(law.stiffness(h, z, 0.0), hertz.stiffness(h, z, 0.0),
+                1e-8 * hertz.stiffness(h, z, 0.0));
+  }
+}
+
+TEST(ExpressionLaw, ContinuedLinearlyBelowZeroSoSeparationIsASignChange) {
+  const auto expr = compile("K_h*z^1.5");  // NaN for z < 0 in muParser
+  const ExpressionLaw<false> law{expr, false};
+  Branch<double> h;
+  h.phase = Phase::unloading;
+  const double below = law.force(h, -1e-9, 0.0);
+  EXPECT_TRUE(std::isfinite(below));
+  EXPECT_LT(below, 0.0);
+  EXPECT_NEAR(below, -1e-9 * expr->stiffness_scale(), kAlgebra * 1e-9 * expr->stiffness_scale());
+  EXPECT_FALSE(expr->non_finite().has_value());
+}
+
+TEST(ExpressionLaw, RateDependenceIsDetectedFromTheVariablesUsed) {
+  EXPECT_TRUE(compile("1e6*z + 100*zdot")->uses_rate());
+  EXPECT_TRUE(compile("1e6*z", "1e6*z + 100*zdot")->uses_rate());
+  EXPECT_FALSE(compile("1e6*z", "1e6*(z - 0.1*zmax)")->uses_rate());
+}
+
+TEST(ExpressionLaw, UnloadingRecordsThePermanentSetOfItsExpression) {
+  const DerivedParameters p = derive(paper_scene());
+  const auto expr = compile("z < z_y ? K_h*z^1.5 : K_y*(z-z_y) + K_h*z_y^1.5",
+                            "K_h*(z^1.5 - zmax^1.5 + z_y^1.5) + K_y*(zmax - z_y)");
+  const ExpressionLaw<false> law{expr, false};
+  const ElastoplasticLaw ep{p.K_h, p.z_y, p.K_y};
+  Branch<double> h;
+  ElastoplasticLaw::History<double> g;
+  const double z_m = 6 * p.z_y;
+  law.begin_unloading(h, z_m);
+  ep.next_segment(g);
+  ep.begin_unloading(g, z_m);
+  // bisection to adjacent doubles of a function with slope ~ K_h sqrt(z_f)
+  EXPECT_NEAR(h.z_perm, g.z_perm, 1e-12 * z_m);
+  // stored energy by 20-point Gauss-Legendre of a smooth branch: ~1e-13 relative
+  const double stored = ep.stored_energy(g, z_m);
+  EXPECT_NEAR(law.stored_energy(h, z_m), stored, 1e-10 * stored);
+}
+
+TEST(ExpressionLaw, SimulateGivesTheBuiltInLawsCorToTheIntegratorsTolerance) {
+  SimulationRequest builtin;
+  builtin.scene = paper_scene();
+  builtin.scene.damping = Damping::coefficient(11440);
+  builtin.law = LawKind::elastoplastic;
+  SimulationRequest typed = builtin;
+  typed.law = LawKind::expression;
+  typed.expression.force = "z < z_y ? K_h*z^1.5 : K_y*(z-z_y) + K_h*z_y^1.5";
+  typed.expression.unload = "K_h*(z^1.5 - zmax^1.5 + z_y^1.5) + K_y*(zmax - z_y)";
+  const ImpactResult a = simulate(builtin), b = simulate(typed);
+  ASSERT_TRUE(a.separated() && b.separated()) << b.reason;
+  // default rtol 1e-10: global error <= N rtol = 1e-7 (N <= 1000 steps); the expression law
+  // has no located kink at z_y, which costs the adaptive stepper a few rejected steps only
+  EXPECT_NEAR(b.e, a.e, 1e-7);
+  EXPECT_NEAR(b.F_max, a.F_max, 1e-7 * a.F_max);
+  EXPECT_NEAR(b.z_perm, a.z_perm, 1e-7 * a.z_max);
+}
+
+TEST(ExpressionLaw, NonFiniteForceInContactIsAFailureNamingTheExpression) {
+  SimulationRequest r;
+  r.scene = paper_scene();
+  r.law = LawKind::expression;
+  r.expression.force = "K_h*z^1.5 + log(2e-5 - z)";  // NaN once z > 2e-5 m
+  const ImpactResult res = simulate(r);
+  EXPECT_EQ(res.status, ImpactStatus::failed);
+  EXPECT_EQ(res.failure, FailureKind::law_domain);
+  EXPECT_NE(res.reason.find("--force evaluated to"), std::string::npos) << res.reason;
+}
+
+TEST(ExpressionLaw, TheFiftyDigitReferenceSaysItCannotRunIt) {
+  SimulationRequest r;
+  r.scene = paper_scene();
+  r.law = LawKind::expression;
+  r.expression.force = "K_h*z^1.5";
+  r.integrator = IntegratorKind::mp50;
+  const ImpactResult res = simulate(r);
+  EXPECT_EQ(res.status, ImpactStatus::failed);
+  EXPECT_NE(res.reason.find("double precision only"), std::string::npos) << res.reason;
+}
+
+TEST(ExpressionLaw, RateDependentExpressionRefusesASeriesDashpot) {
+  SimulationRequest r;
+  r.scene = paper_scene();
+  r.scene.damping = Damping::ratio(0.1);
+  r.law = LawKind::expression;
+  r.expression.force = "1e6*z + 50*zdot";
+  EXPECT_THROW(validate(r), InputError);
+}
+
+// Linear spring-dashpot m z'' + c z' + k z = 0 with tension allowed until z = 0 (SPEC §3):
+// e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m)).
+TEST(ExpressionLaw, LinearSpringDashpotWithTensionGivesTheClosedFormCor) {
+  const double m = paper_scene().mass, k = 4e6;
+  for (double zeta : {0.05, 0.2, 0.5}) {
+    SimulationRequest r;
+    r.scene = paper_scene();
+    r.law = LawKind::expression;
+    r.expression = {"k*z + c*zdot", "", true};
+    r.parameters = {{"k", k}, {"c", 2 * zeta * std::sqrt(k * m)}};
+    const ImpactResult res = simulate(r);
+    ASSERT_TRUE(res.separated()) << res.reason;
+    const double exact = std::exp(-std::numbers::pi * zeta / std::sqrt(1 - zeta * zeta));
+    // default rtol 1e-10 over N <= 1000 steps: 1e-7 in e
+    EXPECT_NEAR(res.e, exact, 1e-7) << "zeta = " << zeta;
+  }
+}
+
+// The same law clamped at F >= 0 ends contact earlier (F = 0 while z > 0), so it rebounds
+// faster than with tension: the difference is what --allow-tension decides.
+TEST(ExpressionLaw, ClampedSpringDashpotEndsContactBeforeZeroDeformation) {
+  const double m = paper_scene().mass, k = 4e6, zeta = 0.2;
+  SimulationRequest r;
+  r.scene = paper_scene();
+  r.law = LawKind::expression;
+  r.expression = {"k*z + c*zdot", "", false};
+  r.parameters = {{"k", k}, {"c", 2 * zeta * std::sqrt(k * m)}};
+  const ImpactResult clamped = simulate(r);
+  r.expression.allow_tension = true;
+  const ImpactResult tension = simulate(r);
+  ASSERT_TRUE(clamped.separated() && tension.separated());
+  EXPECT_GT(clamped.e, tension.e + 1e-3);
+  EXPECT_LT(clamped.t_contact, tension.t_contact);
+}
+
+}  // namespace
+}  // namespace ivv

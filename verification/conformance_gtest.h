@@ -1,0 +1,90 @@
+// The conformance checks as a GoogleTest suite, for a downstream project's own law:
+//
+//   #include <ivv/verification/conformance_gtest.h>   // (installed path; in-tree without ivv/)
+//   ivv::conformance::testing::Subject my_law_subject() {
+//     return {ivv::conformance::law_under_test<MyLaw>("my-law", "F = ...",
+//                                                      [](const ivv::Scene& s) { ... }),
+//             ivv::conformance::Claims{}, ivv::conformance::default_grid(ivv::paper_scene())};
+//   }
+//   IVV_CONFORMANCE_SUITE(MyLawConformance, my_law_subject)
+//
+// Each check is its own test (`MyLawConformance/Check.Run/static_onset`, ...): it passes when
+// the check passes, or when the check does not apply to the law and says why. The checks run
+// once per suite (memoised), however many tests there are.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <mutex>
+#include <string>
+
+#include "verification/conformance.h"
+#include "verification/conformance_law.h"
+
+namespace ivv::conformance::testing {
+
+struct Subject {
+  LawUnderTest law;
+  Claims claims;
+  Grid grid;
+};
+
+// Every check id run_conformance can produce.
+inline const std::vector<std::string>& all_check_ids() {
+  static const std::vector<std::string> ids = {
+      "static.onset",         "static.attractive",        "static.loading_monotone",
+      "static.breakpoints",   "static.unloading_switch",  "static.unloading_below",
+      "static.stored_energy", "static.stiffness",         "dynamic.energy",
+      "dynamic.cor_range",    "dynamic.cor_definitions",  "dynamic.integrators",
+      "dynamic.monotone_v0",  "dynamic.monotone_damping", "dynamic.low_speed",
+      "dynamic.expected_cor"};
+  return ids;
+}
+
+inline const Report& memoised_report(const std::string& suite, Subject (*make)()) {
+  static std::mutex mutex;
+  static std::map<std::string, Report> reports;
+  std::lock_guard lock(mutex);
+  auto it = reports.find(suite);
+  if (it == reports.end()) {
+    const Subject s = make();
+    it = reports.emplace(suite, run_conformance(s.law, s.claims, s.grid)).first;
+  }
+  return it->second;
+}
+
+// The assertion of one check: passed, or not applicable with a reason.
+inline ::testing::AssertionResult check_holds(const Report& report, const std::string& id) {
+  for (const Check& c : report.checks)
+    if (c.id == id) {
+      if (c.passed) return ::testing::AssertionSuccess() << c.detail;
+      return ::testing::AssertionFailure()
+             << id << " failed: " << c.detail << " (measured " << c.measured << ", tolerance "
+             << c.tolerance << ": " << c.why << ")";
+    }
+  for (const auto& [na, why] : report.not_applicable)
+    if (na == id && !why.empty()) return ::testing::AssertionSuccess() << "not applicable: " << why;
+  return ::testing::AssertionFailure() << id << " was neither run nor declared not applicable";
+}
+
+inline std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (c == '.') c = '_';
+  return name;
+}
+
+}  // namespace ivv::conformance::testing
+
+// Defines the parameterised suite `SuiteName` over every check for the law of `make_subject`
+// (a function returning ivv::conformance::testing::Subject).
+#define IVV_CONFORMANCE_SUITE(SuiteName, make_subject)                                           \
+  class SuiteName : public ::testing::TestWithParam<std::string> {};                             \
+  TEST_P(SuiteName, Run) {                                                                       \
+    const auto& report = ::ivv::conformance::testing::memoised_report(#SuiteName, make_subject); \
+    EXPECT_TRUE(::ivv::conformance::testing::check_holds(report, GetParam()));                   \
+  }                                                                                              \
+  INSTANTIATE_TEST_SUITE_P(Check, SuiteName,                                                     \
+                           ::testing::ValuesIn(::ivv::conformance::testing::all_check_ids()),    \
+                           ::ivv::conformance::testing::test_name)
