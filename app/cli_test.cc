@@ -220,14 +220,6 @@ TEST(Cli, OutputThroughASymlinkReachesItsTarget) {
   EXPECT_EQ(header.rfind("t,alpha", 0), 0u) << header;
 }
 
-// Issue 10: `-` writes the sweep CSV to standard output.
-TEST(Cli, SweepToStandardOutput) {
-  const CliRun r = ivv("sweep --scene paper --v0 1,2 --zeta 0.1 --out -");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("v0,zeta,e", 0), 0u) << r.out;
-  EXPECT_FALSE(fs::exists("-"));
-}
-
 // Issue 10: fit-hc at an elastic impact (e = 1) failed to bracket mu; mu = 0 is the answer.
 TEST(Cli, FitHcAtAnElasticImpactGivesZeroMu) {
   const CliRun r = ivv("fit-hc --scene paper --v0 0.05 --json");
