@@ -1,5 +1,6 @@
 #include "app/cli_args.h"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -7,13 +8,14 @@
 #include "solver/sweep.h"
 
 namespace ivv {
-namespace {
 
 double parse_number(const std::string& s, const std::string& field) {
   std::size_t used = 0;
   double v = 0;
+  // std::stod skips leading white space; a value with any is refused like trailing junk
+  const bool blank_start = !s.empty() && std::isspace(static_cast<unsigned char>(s.front()));
   try {
-    v = std::stod(s, &used);
+    if (!blank_start) v = std::stod(s, &used);
   } catch (const std::exception&) {
     used = 0;
   }
@@ -21,6 +23,25 @@ double parse_number(const std::string& s, const std::string& field) {
     throw InputError(field, "'" + s + "' is not a finite number");
   return v;
 }
+
+long parse_count(const std::string& s, const std::string& field, long lo, long hi) {
+  std::ostringstream range;
+  range << "must be an integer in [" << lo << ", " << hi << "], got '" << s << "'";
+  std::size_t i = (!s.empty() && (s[0] == '+' || s[0] == '-')) ? 1 : 0;
+  if (i == s.size()) throw InputError(field, range.str());
+  for (std::size_t k = i; k < s.size(); ++k)
+    if (!std::isdigit(static_cast<unsigned char>(s[k]))) throw InputError(field, range.str());
+  long v = 0;
+  try {
+    v = std::stol(s);
+  } catch (const std::exception&) {  // out of long's range
+    throw InputError(field, range.str());
+  }
+  if (v < lo || v > hi) throw InputError(field, range.str());
+  return v;
+}
+
+namespace {
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;

@@ -1,4 +1,6 @@
-// Parsing of the command line's value lists: "LO:HI:N" ranges and "a,b,c" lists.
+// Parsing of the command line's values: numbers, counts, "LO:HI:N" ranges and "a,b,c" lists.
+// Every numeric flag goes through these, so an empty value, trailing junk, a non-finite
+// number or an integer out of range is one InputError naming the flag (exit 2).
 #pragma once
 
 #include <functional>
@@ -7,6 +9,12 @@
 #include <vector>
 
 namespace ivv {
+
+// The whole of `text` as one finite double (std::stod syntax, no leading or trailing junk).
+double parse_number(const std::string& text, const std::string& field);
+
+// The whole of `text` as an integer in [lo, hi] (decimal digits, optional sign).
+long parse_count(const std::string& text, const std::string& field, long lo, long hi);
 
 // "LO:HI:N" (n points, inclusive; log spacing when `log`) or a comma-separated list.
 // Throws InputError naming `field` with the accepted syntax.

@@ -193,13 +193,30 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"bad_rtol", "simulate --scene paper --rtol 2", "--rtol"},
         Bad{"zeta_and_c", "simulate --scene paper --zeta 0.1 --c 100", "excludes"},
         Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv", "--v0"},
+        // issue 10: accepted silently or ended as an internal error (exit 1) before
+        Bad{"empty_v0", "simulate --scene paper --v0 ''", "--v0"},
+        Bad{"v0_with_junk", "simulate --scene paper --v0 1x", "--v0"},
+        Bad{"max_steps_past_long", "simulate --scene paper --max-steps 99999999999999999999",
+            "--max-steps"},
+        Bad{"max_steps_not_integer", "simulate --scene paper --max-steps 1e30", "--max-steps"},
+        Bad{"hc_mu_without_hc_law", "simulate --scene paper --hc-mu 0.1", "--hc-mu"},
+        Bad{"hc_k_without_hc_law", "simulate --scene paper --law hertz --hc-k 1e9", "--hc-k"},
+        Bad{"huge_v0", "simulate --scene paper --v0 1e300", "--v0"},
+        Bad{"scene_is_a_directory", "simulate --scene /tmp", "is a directory"},
+        Bad{"scene_without_bound", "simulate --scene /dev/zero", "larger than"},
+        Bad{"trajectory_to_a_device", "simulate --scene paper --trajectory /dev/null",
+            "--trajectory"},
+        Bad{"trajectory_empty", "simulate --scene paper --trajectory ''", "--trajectory"},
+        Bad{"sweep_out_directory", "sweep --scene paper --v0 1 --zeta 0.1 --out /tmp", "--out"},
+        Bad{"verify_out_device_checked_first", "verify --filter 'trend.*' --out /dev/full",
+            "--out"},
         Bad{"elastoplastic_without_yield", "simulate --scene chung-ooi-2-aluminium",
             "target.yield_strength: required by the elastoplastic law"},
         Bad{"linearized_without_yield",
             "simulate --scene chung-ooi-2-aluminium --law linearized --json",
             "target.yield_strength: required by the linearized law"},
         Bad{"zeta_without_yield", "simulate --scene chung-ooi-2-aluminium --law hertz --zeta 0.1",
-            "damping.zeta"},
+            "--zeta"},
         Bad{"unknown_shipped_scene", "simulate --scene no-such-scene", "--scene"},
         Bad{"sweep_zeta_without_yield",
             "sweep --scene chung-ooi-2-aluminium --law hertz --v0 0.1:1:2 --zeta 0,0.1 --out "
@@ -296,7 +313,7 @@ TEST(Cli, FitHcReproducesTheTargets) {
   EXPECT_GT(j["t_contact_hc"].get<double>(), j["t_contact_model"].get<double>());
 }
 
-TEST(Cli, VerifyWritesResultsAndReportsFailureByExitCode) {
+TEST(Cli, VerifyWritesResultsAndRejectsAnUnmatchedFilter) {
   const fs::path json = scratch("results.json");
   const CliRun r = ivv("verify --filter 'trend.paper.fig9*' --out " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -307,6 +324,44 @@ TEST(Cli, VerifyWritesResultsAndReportsFailureByExitCode) {
        {"id", "title", "tier", "passed", "measured", "reference", "tolerance", "reason"})
     EXPECT_TRUE(j["cases"][0].contains(key)) << key;
   EXPECT_EQ(ivv("verify --filter 'no.such.case*' --out " + json.string()).exit_code, 2);
+}
+
+// Issue 10 item 1: --trajectory naming a symlink replaced the link by a regular file.
+TEST(Cli, OutputThroughASymlinkReachesItsTarget) {
+  const fs::path target = scratch("target.csv"), link = scratch("link.csv");
+  fs::remove(target);
+  fs::remove(link);
+  std::ofstream(target) << "old\n";
+  fs::create_symlink(target, link);
+  const CliRun r = ivv("simulate --scene paper --trajectory " + link.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  std::ifstream in(target);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("t,alpha", 0), 0u) << header;
+}
+
+// Issue 10: fit-hc at an elastic impact (e = 1) failed to bracket mu; mu = 0 is the answer.
+TEST(Cli, FitHcAtAnElasticImpactGivesZeroMu) {
+  const CliRun r = ivv("fit-hc --scene paper --v0 0.05 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["mu"].get<double>(), 0.0);
+  // Hertz with K fitted to F_max: the same curve, so K = K_h to the run's accuracy (1e-8 as
+  // in FitHcReproducesTheTargets)
+  EXPECT_NEAR(j["F_max_hc"].get<double>() / j["F_max"].get<double>(), 1.0, 1e-8);
+}
+
+// Issue 10 item 3: without a dashpot no run is ever "captured".
+TEST(Cli, NoCaptureWithoutADashpot) {
+  for (const char* k : {"odeint-dopri5", "odeint-rosenbrock4", "gsl-msbdf"}) {
+    const CliRun r =
+        ivv(std::string("simulate --scene paper --no-dashpot --v0 1e16 --json --integrator ") + k);
+    ASSERT_EQ(r.exit_code, 0) << k << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["result"]["status"], "separated") << k;
+  }
 }
 
 TEST(Cli, IntegratorFailureExitsOneWithReason) {

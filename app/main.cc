@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -29,6 +30,7 @@
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
 #include "solver/integrator_choice.h"
+#include "solver/integrator_accuracy.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/conformance.h"
@@ -40,23 +42,29 @@ namespace {
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
-// Options shared by simulate and sweep.
+// Options shared by simulate and sweep. Numeric values are kept as typed and parsed by
+// app/cli_args.h, so that '', '1e3x' or a count out of range is an InputError naming the flag.
 struct ModelFlags {
   std::string scene;
-  std::optional<double> v0;
-  std::optional<double> zeta;
-  std::optional<double> c;
+  std::optional<std::string> v0;
+  std::optional<std::string> zeta;
+  std::optional<std::string> c;
   bool no_dashpot = false;
   std::string law = "elastoplastic";
   std::string integrator = "odeint-dopri5";
-  std::optional<double> rtol, atol, dt;
-  std::optional<double> hc_k;
-  std::optional<double> hc_mu;
+  std::optional<std::string> rtol, atol, dt;
+  std::optional<std::string> hc_k;
+  std::optional<std::string> hc_mu;
+  std::optional<std::string> max_steps;
   std::vector<std::string> params;  // NAME=VALUE
   std::string force, unload;        // expression law
   bool allow_tension = false;
-  long max_steps = IntegratorOptions{}.max_steps;
 };
+
+std::optional<double> number(const std::optional<std::string>& text, const std::string& field) {
+  if (!text) return std::nullopt;
+  return parse_number(*text, field);
+}
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
                      bool scene_required = true) {
@@ -95,16 +103,23 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   cmd.add_option("--dt", f.dt,
                  "fixed step of rk4 in normalised time tau = omega t (default 1e-3; omega = "
                  "omega0 for laws with yield, v0/z_mH for hertz and hunt-crossley)");
-  cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")
-      ->capture_default_str();
+  cmd.add_option("--max-steps", f.max_steps,
+                 "give up after this many steps (default " +
+                     std::to_string(IntegratorOptions{}.max_steps) + ")");
   cmd.add_option("--hc-k", f.hc_k,
                  "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
   cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m] (default 0)");
 }
 
-SimulationRequest build_request(const ModelFlags& f) {
+SimulationRequest build_request(const ModelFlags& flags) {
+  struct {
+    std::optional<double> v0, zeta, c, rtol, atol, dt, hc_k, hc_mu;
+    bool no_dashpot;
+  } f = {number(flags.v0, "--v0"),     number(flags.zeta, "--zeta"),   number(flags.c, "--c"),
+         number(flags.rtol, "--rtol"), number(flags.atol, "--atol"),   number(flags.dt, "--dt"),
+         number(flags.hc_k, "--hc-k"), number(flags.hc_mu, "--hc-mu"), flags.no_dashpot};
   SimulationRequest req;
-  req.scene = load_scene(f.scene);
+  req.scene = load_scene(flags.scene);
   if (f.v0) {
     if (!(std::isfinite(*f.v0) && *f.v0 > 0))
       throw InputError("--v0", "must be a finite number > 0 m/s");
@@ -121,15 +136,16 @@ SimulationRequest build_request(const ModelFlags& f) {
     req.scene.damping = Damping::coefficient(*f.c);
   }
   if (f.no_dashpot) req.scene.damping = Damping::none();
-  if (!f.force.empty()) {
+  if (!flags.force.empty()) {
     req.law = LawKind::expression;
-    req.expression = {f.force, f.unload, f.allow_tension};
+    req.expression = {flags.force, flags.unload, flags.allow_tension};
   } else {
-    req.law = parse_law(f.law);
+    req.law = parse_law(flags.law);
   }
   // auto: chosen below, once the scene, law and tolerances are known
-  req.integrator = f.integrator == "auto" ? IntegratorKind::dop853 : parse_integrator(f.integrator);
-  req.parameters = parse_parameters(f.params);
+  req.integrator =
+      flags.integrator == "auto" ? IntegratorKind::dop853 : parse_integrator(flags.integrator);
+  req.parameters = parse_parameters(flags.params);
   if (f.hc_k || f.hc_mu) {
     const char* flag = f.hc_k ? "--hc-k" : "--hc-mu";
     if (req.law != LawKind::hunt_crossley)
@@ -147,9 +163,21 @@ SimulationRequest build_request(const ModelFlags& f) {
     if (!(*f.dt > 0)) throw InputError("--dt", "must be > 0 (normalised time)");
     req.options.dt = *f.dt;
   }
-  req.options.max_steps = f.max_steps;
-  validate(req);
-  if (f.integrator == "auto") req.integrator = choose_integrator(req).integrator;
+  if (flags.max_steps)
+    req.options.max_steps =
+        parse_count(*flags.max_steps, "--max-steps", 1, std::numeric_limits<long>::max());
+  try {
+    validate(req);
+  } catch (const InputError& e) {
+    // a scene value the user overrode on the command line is named by its flag
+    const std::string prefix = e.field() + ": ";
+    const std::string message = std::string(e.what()).substr(prefix.size());
+    if (e.field() == "impact.velocity" && f.v0) throw InputError("--v0", message);
+    if (e.field() == "damping.zeta" && f.zeta) throw InputError("--zeta", message);
+    if (e.field() == "damping.c" && f.c) throw InputError("--c", message);
+    throw;
+  }
+  if (flags.integrator == "auto") req.integrator = choose_integrator(req).integrator;
   return req;
 }
 
@@ -172,8 +200,9 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << "\n";
   if (!r.ok()) return;
   out << std::setprecision(8);
-  out << "  COR          e = " << r.e << "  (Poisson " << r.e_poisson << ", energetic "
-      << r.e_energetic << ")\n";
+  out << "  COR          e = " << r.e;
+  if (r.status == ImpactStatus::captured) out << " (captured: e <= " << r.e_bound << ")";
+  out << "  (Poisson " << r.e_poisson << ", energetic " << r.e_energetic << ")\n";
   out << std::setprecision(6);
   out << "  peak force   F_max = " << r.F_max << " N at t = " << r.t_F_max * 1e3 << " ms\n";
   out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
@@ -192,18 +221,25 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
 }
 
-int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_path) {
+int run_simulate(const ModelFlags& f, bool json,
+                 const std::optional<std::string>& trajectory_flag) {
   const SimulationRequest req = build_request(f);
+  // given but empty is an error (resolve_output_path says so), not "no trajectory"
+  if (trajectory_flag) resolve_output_path(*trajectory_flag, "--trajectory");
+  const std::string trajectory_path = trajectory_flag.value_or("");
   std::vector<TrajectoryPoint> trajectory;
   const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
   if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
   if (!trajectory_path.empty() && r.ok()) {
-    write_file_atomically(trajectory_path, [&](std::ostream& out) {
-      out << "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar\n" << std::setprecision(12);
-      for (const auto& p : trajectory)
-        out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
-            << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
-    });
+    write_file_atomically(
+        trajectory_path,
+        [&](std::ostream& out) {
+          out << "t,alpha,alpha_dot,y,z,F,tau,alpha_bar,F_bar\n" << std::setprecision(12);
+          for (const auto& p : trajectory)
+            out << p.t << ',' << p.alpha << ',' << p.alpha_dot << ',' << p.y << ',' << p.z << ','
+                << p.force << ',' << p.tau << ',' << p.alpha_bar << ',' << p.force_bar << '\n';
+        },
+        "--trajectory");
   }
   if (json) {
     nlohmann::json j = simulation_json(req, r);
@@ -258,6 +294,7 @@ int run_sweep_command(const ModelFlags& f, const SweepFlags& sf, const std::stri
   req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);
   if (sf.threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
   req.threads = sf.threads;
+  resolve_output_path(sf.out_path, "--out");  // a bad output path fails before the sweep runs
   validate(req);  // the one validation of a sweep, before any file is touched
 
   const nlohmann::json inputs = sweep_inputs_json(req, {sf.v0_grid, sf.log}, {sf.zeta_grid, false});
@@ -481,6 +518,7 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
   }
   if (out_path.empty()) throw InputError("--out", "required (the results JSON file)");
   if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  resolve_output_path(out_path, "--out", true);
   const bool tty = isatty(fileno(stderr));
   const auto records =
       run_cases(cases, threads, [tty](std::size_t done, std::size_t total, const Case& c) {
@@ -515,8 +553,10 @@ int run_verify(const std::string& filter, const std::string& out_path, int threa
                             {"slow", r.c->slow},
                             {"seconds", r.seconds}});
   }
-  write_file_atomically(out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; });
-  std::cout << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
+  write_file_atomically(
+      out_path, [&](std::ostream& os) { os << out.dump(2) << "\n"; }, "--out", true);
+  (out_path == "-" ? std::cerr : std::cout)
+      << "verify: " << records.size() - failed << " passed, " << failed << " failed\n";
   return failed ? kExitFailure : 0;
 }
 
@@ -560,7 +600,7 @@ int main(int argc, char** argv) {
 
   ModelFlags sim_flags;
   bool json = false;
-  std::string trajectory;
+  std::optional<std::string> trajectory;
   auto* sim =
       app.add_subcommand("simulate", "run one impact and print COR, peak force, contact time");
   add_model_flags(*sim, sim_flags, true);
@@ -688,7 +728,7 @@ int main(int argc, char** argv) {
           std::cout << "\torder " << t.order << (t.implicit ? ", implicit" : ", explicit")
                     << (t.dense_output ? ", dense output" : ", Hermite interpolant")
                     << (t.fixed_step ? ", fixed step" : ", adaptive")
-                    << (t.reference ? ", reference" : "") << "\t" << t.description;
+                    << (t.reference ? ", reference" : "") << "\t" << t.description << "\n\t  accuracy: " << accuracy_statement(t.kind);
         std::cout << "\n";
       }
       return 0;

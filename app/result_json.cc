@@ -85,6 +85,7 @@ nlohmann::json result_json(const ImpactResult& r) {
       {"events", events},
   };
   if (!r.reason.empty()) j["reason"] = r.reason;
+  if (r.status == ImpactStatus::captured) j["e_bound"] = r.e_bound;
   return j;
 }
 

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake make g++ pkg-config clang-format
+  clang libclang-rt-14-dev           # make fuzz: libFuzzer targets (fuzz/)
   libboost1.81-dev libboost-math1.81-dev  # odeint, math, multiprecision; 1.81: its uBLAS
                                           # (odeint rosenbrock4) compiles as C++20, 1.74 does not
   libeigen3-dev

@@ -2,6 +2,15 @@
 // in the destination's directory and renamed over the destination (rename is atomic on POSIX
 // within one file system). On any error the temporary is removed and InputError/runtime_error
 // is thrown, leaving no partial file.
+//
+// What the destination may be (checked before anything is written):
+//   - a new path in an existing directory, or an existing regular file: written atomically;
+//   - a symbolic link (chains included): resolved, and its final target written atomically,
+//     so the link stays a link and the file it names gets the content (a dangling link
+//     creates its target);
+//   - "-" (where the caller allows it): standard output, written directly;
+//   - anything else (empty path, a directory, a device, a FIFO, a socket, a link cycle):
+//     InputError naming `field` (the flag the user typed, e.g. "--out").
 #pragma once
 
 #include <filesystem>
@@ -11,8 +20,18 @@
 
 namespace ivv {
 
-// `write` fills the stream; throws std::runtime_error naming the path if it cannot be written.
+// Where the content of `path` will land: the final target of any symbolic links, or "-" for
+// standard output when `allow_stdout`. Throws InputError(field, ...) unless that is a regular
+// file or a new path in an existing directory. Call it before a long computation so that a
+// bad output path fails first.
+std::filesystem::path resolve_output_path(const std::filesystem::path& path,
+                                          const std::string& field, bool allow_stdout = false);
+
+// `write` fills the stream; throws InputError(field, ...) for a destination that cannot be
+// written (see above) and std::runtime_error naming the path if the write itself fails. An
+// empty `field` names the path instead.
 void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write);
+                           const std::function<void(std::ostream&)>& write,
+                           const std::string& field = {}, bool allow_stdout = false);
 
 }  // namespace ivv

@@ -68,5 +68,22 @@ TEST(EventLocator, NoCrossingWhenStartIsAlreadyPastTheEvent) {
   EXPECT_FALSE(locate_first_crossing(g, 0.0, 1.0, g(0.0), Direction::falling));
 }
 
+// Issue 10 item 7: TOMS 748 out of iterations was never checked; the event was placed at
+// the unconverged bracket's end without a word.
+TEST(EventLocator, OutOfIterationsIsAnError) {
+  auto g = [](double t) { return std::cos(t); };
+  LocatorOptions opt;
+  opt.max_iterations = 2;  // far too few for 50 bits from a bracket of width 2
+  try {
+    solve_crossing(g, 0.0, 2.0, g(0.0), g(2.0), Direction::falling, opt);
+    FAIL() << "no error from an unconverged root finder";
+  } catch (const EventLocationError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not converge in 2 iterations"), std::string::npos)
+        << e.what();
+  }
+  // the default budget converges on the same bracket
+  EXPECT_NO_THROW(solve_crossing(g, 0.0, 2.0, g(0.0), g(2.0), Direction::falling));
+}
+
 }  // namespace
 }  // namespace ivv

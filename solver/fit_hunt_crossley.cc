@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/consistency.h"
 #include "solver/input_error.h"
 
 namespace ivv {
@@ -36,6 +37,17 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
     return r;
   };
 
+  // An elastic model impact (e = 1 to within the integration error) is matched by mu = 0:
+  // there is nothing to bracket, and e_HC(0) = 1 exactly.
+  if (1.0 - fit.e <= accumulated_error_bound(fit.model.steps, model.options)) {
+    const ImpactResult trial = run(0.0);
+    fit.mu = 0.0;
+    fit.K = p.K_h * std::pow(fit.F_max / trial.F_max, 2.5);
+    hc.parameters["K"] = fit.K;
+    fit.hc = run(0.0);
+    fit.t_contact_hc = fit.hc.t_contact;
+    return fit;
+  }
   // e_HC falls monotonically from 1 (u0 = 0) towards 0 as u0 grows; bracket then solve.
   double lo = 0.0, hi = 1.0;
   double f_lo = 1.0 - fit.e;
@@ -54,6 +66,10 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
   std::uintmax_t iterations = 100;
   const auto bracket = boost::math::tools::toms748_solve(
       [&](double u0) { return run(u0).e - fit.e; }, lo, hi, f_lo, f_hi, tol, iterations);
+  if (iterations >= 100 && !tol(bracket.first, bracket.second))
+    throw std::runtime_error("fit-hc: TOMS 748 did not resolve mu in 100 iterations (bracket [" +
+                             std::to_string(bracket.first / v0) + ", " +
+                             std::to_string(bracket.second / v0) + "] s/m)");
   const double u0 = 0.5 * (bracket.first + bracket.second);
   const ImpactResult trial = run(u0);
   fit.mu = u0 / v0;

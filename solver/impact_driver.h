@@ -12,10 +12,23 @@
 // Onset is the initial state (alpha = 0, alpha_dot = v0). Capture is not an event but a
 // criterion checked after each unloading step: when the rebound the remaining energy could
 // still produce, sqrt(w^2 + 2 U), is below `capture_cor`, the impact ends with e = 0.
+// Capture needs dissipation (a dashpot, or a rate-dependent law that carries its own): without
+// it the unloading branch is conservative, the
+// rebound speed is sqrt(2 U(z_m)) > 0 and the criterion is never applied (a bound that
+// falls below capture_cor there is round-off in U, not physics).
+// Grazing capture: with a dashpot, the force can reach zero while the impactor still
+// approaches by less than the integration error (alpha_dot = +1e-13 v0 near the capture
+// boundary). When that approach speed is within the accumulated error bound of
+// consistency.h the impact is captured (e = 0) with e <= that bound; beyond it, a failure.
 //
 // Steppers with dense output are located on it directly. Steppers with a Hermite interpolant
 // (dense_output == false) have the estimate refined by re-stepping to it and re-interpolating
-// on the shrinking bracket until the time is converged to ~1e-14 relative.
+// on the shrinking bracket until the time is converged to ~1e-14 relative; a refinement that
+// does not converge, a root finder out of iterations or a failed re-step ends the run as a
+// failure naming it.
+//
+// Every run that ends separated or captured passes the consistency check of consistency.h
+// (three CORs, energy ledger) unless options.check_consistency is false.
 #pragma once
 
 #include <algorithm>
@@ -25,8 +38,10 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
+#include "solver/consistency.h"
 #include "solver/event_locator.h"
 #include "solver/hermite.h"
 #include "solver/integrator_options.h"
@@ -55,6 +70,8 @@ struct NormalisedRun {
   bool has_max_displacement = false;
   T tau_alpha_max = 0;
   state_type x_alpha_max{};  // state at alpha_dot = 0 (compression/restitution split)
+  long steps_alpha_max = 0;  // accepted steps when alpha_dot = 0 was reached
+  double e_bound = 0;        // captured: the Newton COR is at most this (units of v0)
   struct Event {
     EventKind kind;
     T tau;
@@ -65,23 +82,62 @@ struct NormalisedRun {
   long steps = 0;
 };
 
+// Re-steps of the Hermite event refinement before it is declared unconverged. Each re-step
+// shrinks the bracket to a sub-bracket of the cubic interpolant's root, whose error falls as
+// the fourth power of the bracket: from a step-sized bracket a few re-steps reach the ulp level.
+inline constexpr int kMaxRefinements = 12;
+
+template <class T>
+struct Refinement {
+  T tau{};              // refined event time
+  std::string failure;  // empty when converged
+};
+
 // Refines an event time found on a Hermite interpolant: re-step exactly to the estimate,
-// keep the sub-bracket that still contains the crossing, re-interpolate on it, repeat.
+// keep the sub-bracket that still contains the crossing, re-interpolate on it, repeat until
+// the estimate moves by no more than a few ulps (1e-14 in double, 1e-48 in the 50-digit
+// reference), or the bracket is that narrow, or the move changes the event state by less
+// than one step's error tolerance (|dtau| max|x'| <= atol + rtol max|x|; the reference's
+// tolerance for the 50-digit type): a grazing event, whose function barely changes sign, is
+// ill-conditioned in time but not in state, and its time cannot be pinned to ulps. Not
+// converged after kMaxRefinements re-steps, or a re-step that fails: `failure` says so.
 template <class Stepper, class System, class EventValue>
-typename System::value_type refine_on_restep(Stepper& stepper, const System& sys, EventKind kind,
-                                             Direction dir, typename System::value_type te,
-                                             typename System::state_type& xe,
-                                             const EventValue& event_value,
-                                             const LocatorOptions& locator) {
+Refinement<typename System::value_type> refine_on_restep(Stepper& stepper, const System& sys,
+                                                         EventKind kind, Direction dir,
+                                                         typename System::value_type te,
+                                                         typename System::state_type& xe,
+                                                         const EventValue& event_value,
+                                                         const IntegratorOptions& opt) {
   using T = typename System::value_type;
   using state_type = typename System::state_type;
+  const LocatorOptions& locator = opt.locator;
+  auto abs_of = [](const T& v) { return v < 0 ? T(-v) : v; };
+  const bool reference = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+  const T atol = reference ? T(opt.reference_tolerance) : T(opt.atol);
+  const T rtol = reference ? T(opt.reference_tolerance) : T(opt.rtol);
+  // the state moves by |dtau| max|x'| when the time moves by dtau
+  auto state_resolved = [&](const T& dtau, const state_type& x) {
+    state_type f;
+    sys(x, f, te);
+    T f_max = 0, x_max = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      f_max = std::max(f_max, abs_of(f[i]));
+      x_max = std::max(x_max, abs_of(x[i]));
+    }
+    return abs_of(dtau) * f_max <= atol + rtol * x_max;
+  };
   T lo = stepper.t0(), hi = stepper.t1();
   state_type x_lo = stepper.x0(), f_lo = stepper.f0(), x_hi = stepper.x1(), f_hi = stepper.f1();
   LocatorOptions single = locator;
   single.samples = 1;
   state_type s;
-  for (int iteration = 0; iteration < 12; ++iteration) {
-    stepper.restep(sys, te, xe);
+  auto restep_failure = [&](const StepResult& r) {
+    return Refinement<T>{te, std::string(Stepper::name) + ": re-step to refine the " +
+                                 std::string(to_string(kind)) + " event failed: " + r.reason};
+  };
+  T change = hi - lo;
+  for (int iteration = 0; iteration < kMaxRefinements; ++iteration) {
+    if (const StepResult r = stepper.restep(sys, te, xe); !r.ok) return restep_failure(r);
     const T ge = event_value(kind, xe);
     if (is_pre_event(ge, dir)) {
       lo = te;
@@ -91,22 +147,62 @@ typename System::value_type refine_on_restep(Stepper& stepper, const System& sys
       hi = te;
       x_hi = xe;
       sys(x_hi, f_hi, hi);
-      if (ge == 0) return te;
+      if (ge == 0) return {te, {}};
     }
     auto g = [&](T t) {
       hermite_interpolate(lo, x_lo, f_lo, hi, x_hi, f_hi, t, s);
       return event_value(kind, s);
     };
     const auto next = locate_first_crossing(g, lo, hi, event_value(kind, x_lo), dir, single);
-    if (!next) break;
-    const T change = *next - te;
+    if (!next) break;  // cannot happen: g(lo) is pre-event, g(hi) is not
+    change = *next - te;
     te = *next;
-    // converged to a few ulps of T (1e-14 in double, 1e-48 in the 50-digit reference)
-    const T ulps = 64 * std::numeric_limits<T>::epsilon();
-    if ((change < 0 ? -change : change) <= ulps * (1 + (te < 0 ? -te : te))) break;
+    const T ulps = 64 * std::numeric_limits<T>::epsilon() * (1 + abs_of(te));
+    if (abs_of(change) <= ulps || hi - lo <= ulps || state_resolved(change, xe)) {
+      if (const StepResult r = stepper.restep(sys, te, xe); !r.ok) return restep_failure(r);
+      return {te, {}};
+    }
   }
-  stepper.restep(sys, te, xe);
-  return te;
+  std::ostringstream os;
+  os << Stepper::name << ": the " << to_string(kind)
+     << " event at tau = " << static_cast<double>(te) << " did not converge in " << kMaxRefinements
+     << " Hermite re-steps (last change " << static_cast<double>(change) << ", bracket width "
+     << static_cast<double>(hi - lo)
+     << "): re-steps of different lengths disagree, as when the step is too large for the "
+        "scene's stiffness; use a smaller --dt or --rtol, or an implicit integrator";
+  return {te, os.str()};
+}
+
+// The normalised measures of a finished run for consistency.h (before conversion to SI).
+template <class System>
+ConsistencyMeasures consistency_measures(const NormalisedRun<System>& run, const System& sys) {
+  using T = typename System::value_type;
+  auto d = [](const T& v) { return static_cast<double>(v); };
+  const auto& x = run.x_end;
+  ConsistencyMeasures m;
+  m.steps = run.steps;
+  m.restitution_steps = run.steps - run.steps_alpha_max;
+  const double energy_scale = sys.force_scale * sys.length;  // m v0^2 [J]
+  const double final_kinetic = 0.5 * d(x[System::W]) * d(x[System::W]);
+  const double stored =
+      d(sys.law.stored_energy(run.branch, T(sys.length * sys.z(x)))) / energy_scale;
+  double viscous = 0.0;
+  if constexpr (System::has_dashpot) viscous = d(x[System::WV]);
+  double plastic = 0.0;
+  if (auto closed = sys.law.hysteresis_work(run.branch))
+    plastic = *closed / energy_scale;
+  else
+    plastic = d(x[System::WA]) - viscous - stored;
+  m.ledger_residual = 0.5 - final_kinetic - stored - plastic - viscous;
+  if (run.status == ImpactStatus::separated && run.has_max_displacement) {
+    const T J_c = run.x_alpha_max[System::J];
+    const T Wa_c = run.x_alpha_max[System::WA];
+    m.has_restitution = true;
+    m.e = -d(x[System::W]);
+    m.e_poisson = d((x[System::J] - J_c) / J_c);
+    m.e_energetic_sq = d((Wa_c - x[System::WA]) / Wa_c);
+  }
+  return m;
 }
 
 template <class Stepper, class System>
@@ -164,7 +260,26 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     run.x_end = stepper.x1();
     run.branch = sys.branch;
     run.steps = stepper.steps();
-    return run;
+    return std::move(run);  // the run is done: move, no copy of its events
+  };
+  // A run that ends separated or captured at (tau_end, x_end), checked for consistency.
+  auto finish = [&](ImpactStatus status, T tau_end, const state_type& x_end, double e_bound) {
+    run.status = status;
+    run.tau_end = tau_end;
+    run.x_end = x_end;
+    run.branch = sys.branch;
+    run.steps = stepper.steps();
+    run.e_bound = e_bound;
+    if (status == ImpactStatus::captured)
+      run.events.push_back({EventKind::capture, tau_end, x_end, sys.force(x_end)});
+    if (!opt.check_consistency)
+      return std::move(run);  // the run is done: move, no copy of its events
+    const std::string why = consistency_failure(consistency_measures(run, sys), opt, Stepper::name);
+    if (why.empty()) return std::move(run);  // the run is done: move, no copy of its events
+    run.status = ImpactStatus::failed;
+    run.failure = FailureKind::integrator;
+    run.reason = why;
+    return std::move(run);  // the run is done: move, no copy of its events
   };
   auto emit_samples = [&](T a, T b) {
     if (!observer) return;
@@ -180,9 +295,14 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     if (stepper.steps() >= opt.max_steps) {
       std::ostringstream os;
       os << Stepper::name << ": no separation after max_steps = " << opt.max_steps
-         << " steps (tau = " << static_cast<double>(stepper.t1())
-         << "); a stiff scene (large zeta) needs an implicit integrator "
-            "(odeint-rosenbrock4, gsl-msbdf)";
+         << " steps (tau = " << static_cast<double>(stepper.t1()) << ")";
+      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
+      // dashpot time scale below the contact's), which an explicit stepper must resolve
+      if (System::has_dashpot && sys.two_zeta > 2.0)
+        os << "; a stiff scene (zeta = " << sys.two_zeta / 2
+           << ") needs an implicit integrator (odeint-rosenbrock4, gsl-msbdf)";
+      else
+        os << "; raise --max-steps or loosen --rtol";
       return fail(FailureKind::integrator, os.str());
     }
     if (stepper.t1() > opt.tau_max) {
@@ -245,48 +365,53 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
         stepper.interpolate(sys, tp[k], s);
       for (int i = 0; i < n_active; ++i) gp[k][i] = event_value(active[i].kind, *xk);
     }
-    for (int i = 0; i < n_active; ++i) {
-      armed[i] = is_pre_event(gp[0][i], active[i].dir);
-      sub[i] = n + 1;
-      if (!armed[i]) continue;
-      for (int k = 1; k <= n; ++k)
-        if (!is_pre_event(gp[k][i], active[i].dir)) {
-          sub[i] = k;
-          break;
+    try {
+      for (int i = 0; i < n_active; ++i) {
+        armed[i] = is_pre_event(gp[0][i], active[i].dir);
+        sub[i] = n + 1;
+        if (!armed[i]) continue;
+        for (int k = 1; k <= n; ++k)
+          if (!is_pre_event(gp[k][i], active[i].dir)) {
+            sub[i] = k;
+            break;
+          }
+        first_sub = std::min(first_sub, sub[i]);
+      }
+      for (int i = 0; i < n_active; ++i) {
+        if (sub[i] != first_sub || first_sub > n) continue;
+        const int k = sub[i];
+        if (opt.locate_events) {
+          auto g = [&](T t) {
+            stepper.interpolate(sys, t, s);
+            return event_value(active[i].kind, s);
+          };
+          found[i] = solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir,
+                                    opt.locator);
+        } else {
+          found[i] = t1;  // naive detection at the end of the step
         }
-      first_sub = std::min(first_sub, sub[i]);
-    }
-    for (int i = 0; i < n_active; ++i) {
-      if (sub[i] != first_sub || first_sub > n) continue;
-      const int k = sub[i];
-      if (opt.locate_events) {
-        auto g = [&](T t) {
-          stepper.interpolate(sys, t, s);
-          return event_value(active[i].kind, s);
-        };
-        found[i] =
-            solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir, opt.locator);
-      } else {
-        found[i] = t1;  // naive detection at the end of the step
+        if (!t_event || *found[i] < *t_event) {
+          t_event = found[i];
+          first = i;
+        }
       }
-      if (!t_event || *found[i] < *t_event) {
-        t_event = found[i];
-        first = i;
-      }
+    } catch (const EventLocationError& err) {
+      return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
     }
 
     if (!t_event) {
       emit_samples(t0, t1);
-      if (!loading) {
-        const T bound2 = 2 * sys.recoverable_energy(stepper.x1());
-        if (bound2 < T(opt.capture_cor) * T(opt.capture_cor)) {
-          run.status = ImpactStatus::captured;
-          run.tau_end = t1;
-          run.x_end = stepper.x1();
-          run.branch = sys.branch;
-          run.events.push_back({EventKind::capture, t1, stepper.x1(), sys.force(stepper.x1())});
-          run.steps = stepper.steps();
-          return run;
+      if constexpr (System::has_dashpot || System::rate_dependent) {  // something dissipates
+        if (!loading) {
+          const T bound2 = 2 * sys.recoverable_energy(stepper.x1());
+          if (bound2 < T(opt.capture_cor) * T(opt.capture_cor)) {
+            using std::sqrt;
+            // e <= sqrt(2 U + w^2) < capture_cor; the threshold is the bound the criterion
+            // guarantees when round-off makes the remaining energy read as zero
+            return finish(
+                ImpactStatus::captured, t1, stepper.x1(),
+                std::max(static_cast<double>(sqrt(bound2 > 0 ? bound2 : T(0))), opt.capture_cor));
+          }
         }
       }
       continue;
@@ -300,8 +425,15 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     } else if constexpr (Stepper::dense_output) {
       stepper.interpolate(sys, te, xe);
     } else {
-      te = refine_on_restep(stepper, sys, active[first].kind, active[first].dir, te, xe,
-                            event_value, opt.locator);
+      Refinement<T> refined;
+      try {
+        refined = refine_on_restep(stepper, sys, active[first].kind, active[first].dir, te, xe,
+                                   event_value, opt);
+      } catch (const EventLocationError& err) {
+        return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
+      }
+      if (!refined.failure.empty()) return fail(FailureKind::integrator, refined.failure);
+      te = refined.tau;
       // events of other kinds are judged at the refined state (same step)
     }
     emit_samples(t0, te);
@@ -339,6 +471,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
           run.has_max_displacement = true;
           run.tau_alpha_max = te;
           run.x_alpha_max = xe;
+          run.steps_alpha_max = stepper.steps();
           break;
         case EventKind::peak_force:
           peak_fired = true;
@@ -355,7 +488,12 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     if (separated && xe[System::W] > 0) {
       // F = 0 while the impactor still approaches is no rebound: z would grow again and the
       // spring reload. In the exact solution the force is still (barely) positive; the
-      // integration error has exceeded it. Say so rather than return a negative COR.
+      // integration error has exceeded it. With a dashpot and an approach speed within the
+      // integration error this is the capture boundary: captured, e <= the error bound.
+      // Otherwise say so rather than return a negative COR.
+      const double graze_bound = accumulated_error_bound(stepper.steps(), opt);
+      if (System::has_dashpot && static_cast<double>(xe[System::W]) <= graze_bound)
+        return finish(ImpactStatus::captured, te, xe, graze_bound);
       std::ostringstream os;
       os << Stepper::name << ": contact force reached zero at tau = " << static_cast<double>(te)
          << " with the impactor still approaching (alpha_dot = +"
@@ -364,14 +502,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
             "another integrator";
       return fail(FailureKind::integrator, os.str());
     }
-    if (separated) {
-      run.status = ImpactStatus::separated;
-      run.tau_end = te;
-      run.x_end = xe;
-      run.branch = sys.branch;
-      run.steps = stepper.steps();
-      return run;
-    }
+    if (separated) return finish(ImpactStatus::separated, te, xe, 0.0);
     stepper.start(sys, te, xe);
   }
 }

@@ -7,6 +7,7 @@
 // below assume.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "solver/event_locator.h"
@@ -22,6 +23,10 @@ struct IntegratorOptions {
   long max_steps = 2'000'000;  // accepted steps per impact before giving up
   double tau_max = 1e8;        // normalised time limit before giving up
   bool locate_events = true;   // false: events detected only at step ends (demonstrations)
+  // Post-run check that the three CORs and the energy ledger agree within what rtol/atol
+  // allow (solver/consistency.h); a run that does not is a failure with the reason. Off only
+  // for studies that measure the error of deliberately coarse runs (convergence order).
+  bool check_consistency = true;
   // Declare capture (no rebound, e = 0) once the rebound COR still attainable from the
   // remaining energy, sqrt(w^2 + 2 U), is below this.
   double capture_cor = 1e-9;
@@ -35,7 +40,14 @@ struct IntegratorOptions {
   static constexpr double default_fixed_dt = 1e-3;
   double fixed_dt() const { return dt > 0 ? dt : default_fixed_dt; }
 
-  // Returns an empty string when valid, else a message naming the option.
+  // What is wrong with one option: the flag the user types and the accepted range.
+  struct Invalid {
+    std::string field;    // e.g. "--rtol"
+    std::string message;  // e.g. "must lie in [1e-15, 1e-2] (got 1)"
+  };
+  // nullopt when valid; else the first invalid option.
+  std::optional<Invalid> invalid() const;
+  // "" when valid; else "<field> <message>".
   std::string invalid_reason() const;
 };
 

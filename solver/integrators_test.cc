@@ -8,10 +8,12 @@
 // (normalised), i.e. e = gamma (eq. 20).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "solver/dp45_dense_probe.h"
+#include "solver/integrator_accuracy.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -80,6 +82,23 @@ INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator, ::testing::ValuesIn(all_integrato
                            return n;
                          });
 
+// Issue 10: what each integrator's tolerance delivers is stated (integrator_accuracy.h);
+// the statement is re-measured here against the 50-digit reference.
+TEST_P(EveryIntegrator, DeliversTheStatedAccuracyOnThePaperScene) {
+  for (bool damped : {true, false}) {
+    SimulationRequest req;
+    req.scene = paper_scene();
+    if (damped) req.scene.damping = Damping::ratio(0.1);
+    SimulationRequest ref = req;
+    ref.integrator = IntegratorKind::mp50;
+    req.integrator = GetParam();
+    const ImpactResult r = simulate(req), x = simulate(ref);
+    ASSERT_TRUE(r.separated() && x.separated()) << r.reason << x.reason;
+    EXPECT_LE(std::abs(r.e / x.e - 1.0), measured_relative_error(GetParam()))
+        << (damped ? "zeta 0.1" : "no dashpot");
+  }
+}
+
 TEST(Rk4, RefusesAStepOutsideItsStabilityRegion) {
   SimulationRequest req;
   req.scene = paper_scene();
@@ -88,14 +107,30 @@ TEST(Rk4, RefusesAStepOutsideItsStabilityRegion) {
   req.options.dt = 0.05;  // h lambda ~ 2 zeta k h >> 2.8 once the spring stiffens
   const ImpactResult r = simulate(req);
   EXPECT_EQ(r.status, ImpactStatus::failed);
-  EXPECT_NE(r.reason.find("stability region"), std::string::npos) << r.reason;
+  // Which check fires first depends on where the stiffness appears: the step's own stability
+  // test at its start state, or (the spring stiffening within the first step) the event
+  // refinement, whose re-steps of different lengths then disagree. Either is a named refusal.
+  const bool stability = r.reason.find("stability region") != std::string::npos;
+  const bool refinement = r.reason.find("did not converge") != std::string::npos &&
+                          r.reason.find("too large") != std::string::npos;
+  EXPECT_TRUE(stability || refinement) << r.reason;
 }
 
 TEST(Dp45, DenseOutputIsFourthOrder) {
-  // x' = x on one step of size h: the interpolant's error at mid-step must fall like h^5.
-  const double e1 = dp45_midpoint_error_exponential(0.2);
-  const double e2 = dp45_midpoint_error_exponential(0.1);
-  EXPECT_NEAR(std::log2(e1 / e2), 5.0, 0.3);
+  // x' = x on one step of size h: a fourth-order continuous extension has mid-step error
+  // C h^5 (1 + a h + O(h^2)), so the observed order p(h) = log2(err(2h)/err(h)) is
+  // 5 + O(h): its distance from 5 must halve with each halving of h (0.6 allows the O(h^2)
+  // term). An interpolant of any other order would approach that order instead, and the
+  // distance from 5 would not shrink.
+  const std::array<double, 4> h = {0.4, 0.2, 0.1, 0.05};
+  std::array<double, 3> distance{};
+  for (std::size_t i = 0; i + 1 < h.size(); ++i) {
+    const double p = std::log2(dp45_midpoint_error_exponential(h[i]) /
+                               dp45_midpoint_error_exponential(h[i + 1]));
+    distance[i] = std::abs(p - 5.0);
+  }
+  EXPECT_LE(distance[1], 0.6 * distance[0]) << distance[0] << " " << distance[1];
+  EXPECT_LE(distance[2], 0.6 * distance[1]) << distance[1] << " " << distance[2];
 }
 
 }  // namespace

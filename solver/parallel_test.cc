@@ -57,9 +57,10 @@ TEST_P(ParallelForThreads, ExceptionReachesTheCallerWithItsIndex) {
         << e.what();
     EXPECT_THROW(std::rethrow_exception(e.cause()), std::domain_error);
   }
-  // The other workers stop taking work: at most the calls already in flight (one per other
-  // worker) start after the throwing one.
-  EXPECT_LE(started.load(), bad + 1 + static_cast<std::size_t>(GetParam()));
+  // The other workers stop taking work once the failure is recorded. With one thread that is
+  // exact; with several, a worker preempted between its throw and the stop flag lets the others
+  // run on (seen under load): promptness is asserted where it is deterministic.
+  if (GetParam() == 1) EXPECT_EQ(started.load(), bad + 1);
 }
 
 TEST_P(ParallelForThreads, ProgressCountsEveryItemInOrder) {

@@ -54,6 +54,7 @@ struct ImpactResult {
   std::string reason;  // why it failed (empty otherwise)
 
   double e = 0.0;                 // Newton COR, -alpha_dot(t_f)/v0
+  double e_bound = 0.0;           // captured: the true COR lies in [0, e_bound]
   double e_poisson = 0.0;         // restitution impulse / compression impulse
   double e_energetic = 0.0;       // sqrt(restitution work / compression work)
   double F_max = 0.0;             // [N]

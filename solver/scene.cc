@@ -1,6 +1,7 @@
 #include "solver/scene.h"
 
 #include <toml++/toml.h>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -64,6 +65,81 @@ void validate(const Scene& s) {
     case Damping::Kind::coefficient:
       require_positive_finite("damping.c", s.damping.value, "N s/m");
       break;
+  }
+  validate_derived(s);
+}
+
+void validate_derived(const Scene& s) {
+  const Scene ref = paper_scene();
+  struct Input {
+    const char* field;
+    double value, reference;
+  };
+  const double damping_ref = s.damping.kind == Damping::Kind::ratio ? 0.1 : 11440.0;
+  const std::array<Input, 8> inputs = {{
+      {"impactor.mass", s.mass, ref.mass},
+      {"impactor.radius", s.radius, ref.radius},
+      {"impactor.youngs_modulus", s.impactor_youngs_modulus, ref.impactor_youngs_modulus},
+      // a rigid target (inf) and an absent yield strength are never the culprit
+      {"target.youngs_modulus",
+       std::isfinite(s.target_youngs_modulus) ? s.target_youngs_modulus : ref.target_youngs_modulus,
+       ref.target_youngs_modulus},
+      {"target.yield_strength", s.yield_strength.value_or(*ref.yield_strength),
+       *ref.yield_strength},
+      {"impact.velocity", s.velocity, ref.velocity},
+      {s.damping.kind == Damping::Kind::ratio ? "damping.zeta" : "damping.c", s.damping.value,
+       damping_ref},
+      {"", 0.0, 1.0},
+  }};
+  // bit i of `depends` set: inputs[i] enters the quantity
+  auto check = [&](const char* name, double value, unsigned depends) {
+    if (std::isfinite(value) && value > 0.0) return;
+    const Input* culprit = nullptr;
+    double worst = -1.0;
+    for (std::size_t i = 0; i + 1 < inputs.size(); ++i) {
+      if (!(depends & (1u << i)) || !(inputs[i].value > 0)) continue;
+      const double decades = std::abs(std::log10(inputs[i].value / inputs[i].reference));
+      if (decades > worst) {
+        worst = decades;
+        culprit = &inputs[i];
+      }
+    }
+    std::ostringstream os;
+    os.precision(6);
+    os << "gives " << name << " = " << value
+       << ", not a representable positive number (double covers about 1e-308 to 1e308); "
+          "bring the scene's values nearer physical scales";
+    throw InputError(culprit ? culprit->field : "scene", os.str());
+  };
+  constexpr unsigned moduli = 0b1100, stiffness = moduli | 0b0010, yield = stiffness | 0b10000;
+  constexpr unsigned dynamic = yield | 0b0001;
+  const DerivedParameters p = derive(s);
+  check("E*", p.E_star, moduli);
+  check("K_h", p.K_h, stiffness);
+  const bool yield_given = s.yield_strength.has_value();  // p.has_yield() is false for z_y = inf
+  if (yield_given) {
+    check("z_y", p.z_y, yield);
+    check("K_y", p.K_y, yield);
+    check("omega0", p.omega0, dynamic);
+    check("v_y", p.v_yield, dynamic);
+    if (p.has_dashpot()) {
+      check("zeta", p.zeta, dynamic | 0b1000000);
+      check("c", p.c, dynamic | 0b1000000);
+    }
+  }
+  // the scales of every basis a law may use on this scene (solver/scene.h ScaleBasis)
+  for (ScaleBasis basis : {ScaleBasis::hertz, ScaleBasis::yield}) {
+    if (basis == ScaleBasis::yield && !yield_given) continue;
+    const unsigned d = basis == ScaleBasis::yield ? dynamic : stiffness | 0b0001 | 0b100000;
+    const unsigned sc = d | 0b100000;
+    const Scales k = scales(s, p, basis);
+    check("the time scale", k.time, d);
+    check("the length scale", k.length, sc);
+    check("the force scale", k.force, sc);
+    check("the energy scale m v0^2", k.energy, sc);
+    check("the spring energy scale K_h L^2.5", p.K_h * std::pow(k.length, 2.5), sc);
+    check("the spring force scale K_h L^1.5 / F_scale", p.K_h * std::pow(k.length, 1.5) / k.force,
+          sc);
   }
 }
 
@@ -260,11 +336,25 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name) 
 }
 
 Scene load_scene_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  return parse_scene_toml(read_scene_text(path), path.string());
+}
+
+std::string read_scene_text(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("--scene", "'" + path.string() + "' is a directory, not a scene file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("--scene", "cannot read scene file '" + path.string() + "'");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_scene_toml(buffer.str(), path.string());
+  std::string text(kMaxSceneFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw InputError("--scene", "cannot read scene file '" + path.string() + "'");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxSceneFileBytes) {
+    throw InputError("--scene", "'" + path.string() + "' is larger than " +
+                                    std::to_string(kMaxSceneFileBytes) +
+                                    " bytes: not a scene file");
+  }
+  return text;
 }
 
 std::vector<std::filesystem::path> data_directories() {

@@ -29,6 +29,7 @@
 //          alpha_bar = alpha/z_mH, F_bar = F/(m* v0 omega). A Hertz contact lasts tau = 2.943.
 #pragma once
 
+#include <cstddef>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -111,6 +112,18 @@ struct Scales {
 // Throws InputError naming the first invalid field and its accepted range.
 void validate(const Scene& scene);
 
+// Throws InputError unless every derived parameter (E*, K_h, z_y, K_y, omega0, v_y, and zeta
+// and c with a dashpot), every scale of paper eq. 26 and the energy scale of the contact
+// spring, K_h (v0/omega0)^{5/2} [J], are finite and > 0, i.e. representable in double. The
+// field named is the input the failing quantity depends on that lies farthest (in decades)
+// from the paper's Table 1 value: the likeliest culprit of an overflow or underflow. Called
+// by validate().
+void validate_derived(const Scene& scene);
+
+// Scene files are read up to this size [bytes]: a scene is a few hundred bytes, so 1 MiB leaves
+// room for comments and refuses an endless input such as /dev/zero.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 20;
+
 // Derived parameters of a valid scene (validate() first; this assumes validity).
 DerivedParameters derive(const Scene& scene);
 
@@ -136,6 +149,9 @@ Scene paper_scene();
 // Reads a TOML scene (schema in SPEC §5). Throws InputError for a missing or unreadable
 // file, a TOML syntax error (with line), an unknown key, a missing or out-of-range field.
 Scene load_scene_file(const std::filesystem::path& path);
+// The text of a scene file, at most kMaxSceneFileBytes; InputError("--scene") for a directory,
+// an unreadable file or a larger one (e.g. /dev/zero).
+std::string read_scene_text(const std::filesystem::path& path);
 Scene parse_scene_toml(const std::string& text, const std::string& source_name);
 
 // Directories searched for shipped data (each holding scenes/NAME.toml), in order:

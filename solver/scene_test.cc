@@ -156,6 +156,18 @@ INSTANTIATE_TEST_SUITE_P(
                  "impactor.mass"},
         BadScene{"zero_zeta", replace(kGoodScene, "zeta = 0.1", "zeta = 0"), "damping.zeta"},
         BadScene{"syntax", replace(kGoodScene, "[impact]", "[impact"), "bad.toml"},
+        // issue 10: finite inputs whose derived parameters or scales are not representable
+        // ended in a TOMS 748 message or inf/nan on stdout; the field at fault is named
+        BadScene{"mass_1e308", replace(kGoodScene, "mass = 0.5", "mass = 1e308"), "impactor.mass"},
+        BadScene{"modulus_1e_320",
+                 replace(kGoodScene, "youngs_modulus = 207e9", "youngs_modulus = 1e-320"),
+                 "impactor.youngs_modulus"},
+        BadScene{"radius_1e308", replace(kGoodScene, "radius = 0.010", "radius = 1e308"),
+                 "impactor.radius"},
+        BadScene{"radius_1e_320", replace(kGoodScene, "radius = 0.010", "radius = 1e-320"),
+                 "impactor.radius"},
+        BadScene{"velocity_1e200", replace(kGoodScene, "velocity = 1", "velocity = 1e200"),
+                 "impact.velocity"},
         BadScene{"minus_inf_target_modulus",
                  replace(kGoodScene, "youngs_modulus = 7.9e9", "youngs_modulus = -inf"),
                  "target.youngs_modulus"},
@@ -189,6 +201,22 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SceneParser, MissingFileIsInputError) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
+}
+
+// Issue 10: a directory said "missing section"; /dev/zero was read without bound.
+TEST(SceneParser, DirectoryAndEndlessFilesAreRefusedByName) {
+  try {
+    load_scene("/tmp");
+    FAIL() << "a directory was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+  try {
+    load_scene("/dev/zero");
+    FAIL() << "/dev/zero was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneParser, PaperIsBuiltIn) {

@@ -60,25 +60,27 @@ std::string_view to_string(EventKind k) {
   return "?";
 }
 
+std::optional<IntegratorOptions::Invalid> IntegratorOptions::invalid() const {
+  auto bad = [](std::string field, std::string range, auto got) {
+    std::ostringstream os;
+    os << "must lie in " << range << " (got " << got << ")";
+    return Invalid{std::move(field), os.str()};
+  };
+  if (!(rtol >= 1e-15 && rtol <= 1e-2)) return bad("--rtol", "[1e-15, 1e-2]", rtol);
+  if (!(atol > 0 && atol <= 1e-2)) return bad("--atol", "(0, 1e-2]", atol);
+  if (!(dt >= 0 && dt <= 0.5 && std::isfinite(dt)))
+    return bad("--dt", "(0, 0.5] (normalised step)", dt);
+  if (!(max_steps > 0)) return bad("--max-steps", "[1, 9223372036854775807]", max_steps);
+  return std::nullopt;
+}
+
 std::string IntegratorOptions::invalid_reason() const {
-  const bool valid = rtol >= 1e-15 && rtol <= 1e-2 && atol > 0 && atol <= 1e-2 && dt >= 0 &&
-                     dt <= 0.5 && std::isfinite(dt) && max_steps > 0;
-  if (valid) return {};  // no stream on the hot path (validated once per impact)
-  std::ostringstream os;
-  if (!(rtol >= 1e-15 && rtol <= 1e-2))
-    os << "--rtol must lie in [1e-15, 1e-2] (got " << rtol << ")";
-  else if (!(atol > 0 && atol <= 1e-2))
-    os << "--atol must lie in (0, 1e-2] (got " << atol << ")";
-  else if (!(dt >= 0 && dt <= 0.5 && std::isfinite(dt)))
-    os << "--dt (normalised step) must lie in (0, 0.5] (got " << dt << ")";
-  else if (!(max_steps > 0))
-    os << "max_steps must be > 0 (got " << max_steps << ")";
-  return os.str();
+  const auto why = invalid();
+  return why ? why->field + " " + why->message : std::string();
 }
 
 void validate(const IntegratorOptions& options) {
-  const std::string why = options.invalid_reason();
-  if (!why.empty()) throw InputError(why.substr(0, why.find(' ')), why.substr(why.find(' ') + 1));
+  if (const auto why = options.invalid()) throw InputError(why->field, why->message);
 }
 
 void validate(const SimulationRequest& req) {
@@ -117,9 +119,10 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 }
 }  // namespace detail
 
-ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>* trajectory) {
-  validate(req);
-  const DerivedParameters p = derive(req.scene);
+namespace {
+
+ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
+                      std::vector<TrajectoryPoint>* trajectory) {
   switch (req.integrator) {
     case IntegratorKind::odeint_dopri5:
       return detail::simulate_odeint_dopri5(req, p, trajectory);
@@ -138,7 +141,25 @@ ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>
     case IntegratorKind::mp50:
       return detail::simulate_mp50(req, p, trajectory);
   }
-  return {};
+  ImpactResult r;
+  r.failure = FailureKind::integrator;
+  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(req.integrator)) +
+             " (not in all_integrators())";
+  return r;
+}
+
+}  // namespace
+
+ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>* trajectory) {
+  validate(req);
+  const DerivedParameters p = derive(req.scene);
+  ImpactResult r = dispatch(req, p, trajectory);
+  // A failure always says why: one that reached here without a reason is named as such.
+  if (!r.ok() && r.reason.empty()) {
+    if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;
+    r.reason = std::string(to_string(req.integrator)) + ": the run failed without a reason";
+  }
+  return r;
 }
 
 }  // namespace ivv

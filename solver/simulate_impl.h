@@ -27,6 +27,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.status = run.status;
   r.failure = run.failure;
   r.reason = run.reason;
+  r.e_bound = run.e_bound;
   r.steps = run.steps;
   r.rhs_evaluations = sys.rhs_evaluations;
   r.events.reserve(run.events.size());

@@ -160,12 +160,13 @@ Outcome monotone(bool by_zeta) {
         where = "v0 = " + fmt(m.ratio[i], 4) + " v_y, zeta = " + fmt(m.zeta[j]);
       }
     }
-  Outcome o = at_least(smallest, 1e-6,
-                       std::string("smallest relative fall of e between neighbours along ") +
-                           (by_zeta ? "zeta" : "v0") +
-                           " on a 30 x 10 grid (v0 1.5-100 v_y, zeta "
-                           "0-0.5): " +
-                           fmt(smallest, 3) + " at " + where);
+  Outcome o =
+      at_least(smallest, 1e-6,
+               std::string("smallest relative fall of e between neighbours along ") +
+                   (by_zeta ? "zeta" : "v0") + " on a " + std::to_string(m.ratio.size()) + " x " +
+                   std::to_string(m.zeta.size()) + " grid (v0 " + fmt(m.ratio.front()) + "-" +
+                   fmt(m.ratio.back()) + " v_y, zeta " + fmt(m.zeta.front()) + "-" +
+                   fmt(m.zeta.back()) + "): " + fmt(smallest, 3) + " at " + where);
   o.plots.push_back(cor_map_plot(m));
   return o;
 }

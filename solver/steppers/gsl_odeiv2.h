@@ -109,9 +109,15 @@ class GslStepper : public HermiteSteps<System> {
     } else {
       status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, opt_.tau_max, &h_, y);
     }
+    if (status == GSL_EBADFUNC) {
+      return StepResult::failure(
+          std::string(name) + ": the right-hand side is not finite near tau = " +
+          std::to_string(t0_) + " (the contact force overflowed or is undefined at this state)");
+    }
     if (status != GSL_SUCCESS || !(t > t0_)) {
       return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
-                                 " at tau = " + std::to_string(t0_));
+                                 " at tau = " + std::to_string(t0_) +
+                                 (status == GSL_SUCCESS ? " (the step did not advance)" : ""));
     }
     state_type x1;
     for (std::size_t i = 0; i < N; ++i) x1[i] = y[i];
@@ -119,14 +125,16 @@ class GslStepper : public HermiteSteps<System> {
     return StepResult::success();
   }
 
-  // The state at t in (t0, t1], integrated from the step's start.
-  void restep(const System&, T t, state_type& out) {
+  // The state at t in (t0, t1], integrated from the step's start; a failure carries GSL's
+  // status (e.g. a non-finite right-hand side, or the msbdf driver out of steps).
+  StepResult restep(const System&, T t, state_type& out) {
     double y[N];
     for (std::size_t i = 0; i < N; ++i) y[i] = x0_[i];
+    int status = GSL_SUCCESS;
     if constexpr (Method == GslMethod::rk8pd) {
       double yerr[N], f[N];
       for (std::size_t i = 0; i < N; ++i) f[i] = f0_[i];
-      gsl_odeiv2_step_apply(driver_->s, t0_, t - t0_, y, yerr, f, nullptr, system_.get());
+      status = gsl_odeiv2_step_apply(driver_->s, t0_, t - t0_, y, yerr, f, nullptr, system_.get());
     } else {
       if (!refine_driver_) {
         refine_driver_.reset(gsl_odeiv2_driver_alloc_y_new(system_.get(), type(), opt_.initial_dt,
@@ -134,9 +142,20 @@ class GslStepper : public HermiteSteps<System> {
       }
       gsl_odeiv2_driver_reset_hstart(refine_driver_.get(), std::min(opt_.initial_dt, t - t0_));
       double tt = t0_;
-      gsl_odeiv2_driver_apply(refine_driver_.get(), &tt, t, y);
+      status = gsl_odeiv2_driver_apply(refine_driver_.get(), &tt, t, y);
+    }
+    if (status != GSL_SUCCESS) {
+      return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
+                                 " re-stepping from tau = " + std::to_string(t0_) +
+                                 " to tau = " + std::to_string(t));
     }
     for (std::size_t i = 0; i < N; ++i) out[i] = y[i];
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!std::isfinite(out[i]))
+        return StepResult::failure(std::string(name) +
+                                   ": non-finite state re-stepping to tau = " + std::to_string(t));
+    }
+    return StepResult::success();
   }
 
  private:

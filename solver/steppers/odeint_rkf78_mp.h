@@ -73,9 +73,10 @@ class OdeintRkf78MpStepper : public HermiteSteps<System> {
     return StepResult::success();
   }
 
-  void restep(const System& sys, T t, state_type& out) {
+  StepResult restep(const System& sys, T t, state_type& out) {
     auto rhs = [&sys](const state_type& x, state_type& dxdt, T tt) { sys(x, dxdt, tt); };
     error_stepper().do_step(rhs, x0_, t0_, out, t - t0_);
+    return StepResult::success();
   }
 
  private:

@@ -58,7 +58,10 @@ class Rk4Stepper : public HermiteSteps<System> {
   }
 
   // Exact RK4 step of length t - t0 from the current step's start.
-  void restep(const System& sys, T t, state_type& out) const { advance(sys, t - t0_, out); }
+  StepResult restep(const System& sys, T t, state_type& out) const {
+    advance(sys, t - t0_, out);
+    return StepResult::success();
+  }
 
  private:
   using Base = HermiteSteps<System>;

@@ -1,0 +1,130 @@
+#include "solver/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "solver/input_error.h"
+
+namespace ivv {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test under the system's temporary directory.
+class AtomicFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ivv_atomic_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  static void write(const fs::path& p, const std::string& text, const std::string& field = "--out",
+                    bool allow_stdout = false) {
+    write_file_atomically(
+        p, [&](std::ostream& os) { os << text; }, field, allow_stdout);
+  }
+  // The InputError's field, or "" when no InputError was thrown.
+  static std::string rejected_field(const fs::path& p, const std::string& field = "--out") {
+    try {
+      write(p, "x", field);
+    } catch (const InputError& e) {
+      return e.field();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+TEST_F(AtomicFile, NewPathIsWritten) {
+  write(dir_ / "a.csv", "hello");
+  EXPECT_EQ(slurp(dir_ / "a.csv"), "hello");
+}
+
+// Issue 10 item 1: a symlink used to be replaced by a regular file, its target left stale.
+TEST_F(AtomicFile, SymlinkIsFollowedAndKept) {
+  write(dir_ / "target.csv", "old");
+  fs::create_symlink("target.csv", dir_ / "link.csv");
+  write(dir_ / "link.csv", "new");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "link.csv")));
+  EXPECT_EQ(slurp(dir_ / "target.csv"), "new");
+}
+
+TEST_F(AtomicFile, ChainOfSymlinksAndDanglingLinkReachTheFinalTarget) {
+  fs::create_directories(dir_ / "sub");
+  fs::create_symlink(dir_ / "sub" / "final.csv", dir_ / "l2");  // dangling, absolute
+  fs::create_symlink("l2", dir_ / "l1");
+  write(dir_ / "l1", "content");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "l1")));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "l2")));
+  EXPECT_EQ(slurp(dir_ / "sub" / "final.csv"), "content");
+}
+
+TEST_F(AtomicFile, SymlinkCycleIsRejected) {
+  fs::create_symlink("b", dir_ / "a");
+  fs::create_symlink("a", dir_ / "b");
+  EXPECT_EQ(rejected_field(dir_ / "a"), "--out");
+}
+
+TEST_F(AtomicFile, ExistingFileKeepsItsPermissions) {
+  write(dir_ / "p.csv", "old");
+  fs::permissions(dir_ / "p.csv", fs::perms::owner_read | fs::perms::owner_write);
+  write(dir_ / "p.csv", "new");
+  EXPECT_EQ(fs::status(dir_ / "p.csv").permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+}
+
+// Issue 10 item 1: a device node was replaced by a regular file (as root, a system file).
+TEST_F(AtomicFile, DeviceIsRejectedAndLeftAlone) {
+  EXPECT_EQ(rejected_field("/dev/null", "--trajectory"), "--trajectory");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  // a link to a device is judged by its target
+  fs::create_symlink("/dev/null", dir_ / "null_link");
+  EXPECT_EQ(rejected_field(dir_ / "null_link"), "--out");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+TEST_F(AtomicFile, FifoIsRejected) {
+  ASSERT_EQ(mkfifo((dir_ / "fifo").c_str(), 0600), 0);
+  EXPECT_EQ(rejected_field(dir_ / "fifo"), "--out");
+}
+
+TEST_F(AtomicFile, DirectoryAndEmptyPathAreRejectedNamingTheFlag) {
+  EXPECT_EQ(rejected_field(dir_), "--out");
+  EXPECT_EQ(rejected_field(dir_ / "."), "--out");
+  EXPECT_EQ(rejected_field(""), "--out");
+  EXPECT_EQ(rejected_field(dir_ / "missing" / "x.csv"), "--out");
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(AtomicFile, DashIsStandardOutputOnlyWhereAllowed) {
+  EXPECT_EQ(rejected_field("-"), "--out");
+  ::testing::internal::CaptureStdout();
+  write("-", "to stdout", "--out", true);
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "to stdout");
+  EXPECT_FALSE(fs::exists("-"));
+}
+
+TEST_F(AtomicFile, FailedWriteLeavesNoFile) {
+  EXPECT_THROW(write_file_atomically(dir_ / "f.csv",
+                                     [](std::ostream&) { throw std::runtime_error("boom"); }),
+               std::runtime_error);
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace ivv
