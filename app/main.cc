@@ -3,17 +3,24 @@
 //
 // Exit codes: 0 success; 1 a computation failed (integrator could not meet its tolerance,
 // a verification case failed); 2 bad input (message names the field and accepted range).
+#include <signal.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "app/cli_args.h"
+#include "app/mpi_sweep.h"
+#include "app/progress.h"
 #include "app/result_json.h"
+#include "app/sweep_sidecar.h"
 #include "bench/benchmarks.h"
 #include "reports/law_report.h"
 #include "reports/report.h"
@@ -196,47 +203,112 @@ int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_p
   return 0;
 }
 
-int run_sweep_command(const ModelFlags& f, const std::string& v0_grid, bool log,
-                      const std::string& zeta_grid, const std::string& out_path, int threads) {
+// SIGINT/SIGTERM during a sweep: stop handing out work, finish the points in flight, keep the
+// journal. A second signal ends the process at once (SA_RESETHAND); the journal survives it.
+std::atomic<bool> g_sweep_stop{false};
+std::atomic<int> g_sweep_signal{0};
+extern "C" void on_sweep_signal(int sig) {
+  g_sweep_signal = sig;
+  g_sweep_stop = true;
+}
+void install_sweep_signal_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_sweep_signal;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+struct SweepFlags {
+  std::string v0_grid, zeta_grid, out_path;
+  bool log = false;
+  bool resume = false;
+  bool quiet = false;
+  int threads = 0;
+};
+
+int run_sweep_command(const ModelFlags& f, const SweepFlags& sf, const std::string& command) {
   SweepRequest req;
   ModelFlags base = f;
   req.base = build_request(base);
-  req.velocities = parse_grid(v0_grid, "--v0", log);
-  req.zetas = parse_grid(zeta_grid, "--zeta", false);
-  if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
-  req.threads = threads;
-  const auto start = std::chrono::steady_clock::now();
-  bool shown = false;
-  req.progress = [&](std::size_t done, std::size_t total) {
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed < 1.0 && done < total) return;
-    if (elapsed < 1.0 && !shown) return;
-    shown = true;
-    std::fprintf(stderr, "\rivv sweep: %zu/%zu impacts (%.0f%%), %.1f s", done, total,
-                 100.0 * done / total, elapsed);
-    if (done == total) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  };
-  const auto points = run_sweep(req);
-  std::size_t failed = 0;
-  write_file_atomically(out_path, [&](std::ostream& out) {
-    out << "v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,"
-           "energy_residual,steps,status\n"
-        << std::setprecision(12);
-    for (const auto& p : points) {
-      const auto& r = p.result;
-      if (!r.ok()) ++failed;
-      out << p.v0 << ',' << p.zeta << ',' << r.e << ',' << r.e_poisson << ',' << r.e_energetic
-          << ',' << r.F_max << ',' << r.t_F_max << ',' << r.t_contact << ',' << r.z_max << ','
-          << r.alpha_max << ',' << r.z_perm << ',' << r.energy.residual << ',' << r.steps << ','
-          << to_string(r.status) << '\n';
+  req.velocities = parse_grid(sf.v0_grid, "--v0", sf.log);
+  req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);
+  if (sf.threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  req.threads = sf.threads;
+  validate(req);  // the one validation of a sweep, before any file is touched
+
+  const nlohmann::json inputs = sweep_inputs_json(req, {sf.v0_grid, sf.log}, {sf.zeta_grid, false});
+  install_sweep_signal_handlers();
+  std::optional<mpi::World> world;
+  if (mpi::launched_by_mpirun()) world.emplace();
+  const bool writer = !world || world->rank() == 0;
+
+  std::unique_ptr<SweepSink> sink;
+  int start_code = 0;
+  std::string start_error;
+  if (writer) {
+    try {
+      sink = std::make_unique<SweepSink>(req,
+                                         SweepOutputOptions{sf.out_path, sf.resume, inputs.dump()});
+    } catch (const InputError& e) {
+      start_code = kExitBadInput;
+      start_error = e.what();
+    } catch (const std::exception& e) {
+      start_code = kExitFailure;
+      start_error = e.what();
     }
+  }
+  if (world) start_code = world->agree_on_start(start_code);
+  if (start_code != 0) {
+    if (writer) std::cerr << "ivv: error: " << start_error << "\n";
+    return start_code;
+  }
+  if (writer && sink->resumed() > 0)
+    std::cerr << "ivv sweep: resuming: " << sink->resumed() << " of " << sink->total()
+              << " points read back from " << sink->journal_path().string() << "\n";
+
+  ProgressLine progress("ivv sweep", writer ? sink->resumed() : 0);
+  SweepRunOptions run;
+  run.stop = &g_sweep_stop;
+  if (writer && !sf.quiet)
+    run.progress = [&](std::size_t d, std::size_t t) { progress.update(d, t); };
+  if (world) {
+    const auto per_rank = mpi::run_sweep_ranks(*world, req, sink.get(), run);
+    if (writer) {
+      progress.finish();
+      std::cerr << "ivv sweep: " << world->size() << " MPI ranks computed";
+      for (std::size_t r = 0; r < per_rank.size(); ++r)
+        std::cerr << (r ? ", " : " ") << per_rank[r];
+      std::cerr << " points\n";
+    }
+    if (!writer) return 0;
+  } else {
+    run_sweep_points(req, *sink, run);
+  }
+  progress.finish();
+
+  const bool complete = sink->finish([&](const SweepCounts& counts) {
+    const nlohmann::json sidecar = sweep_sidecar_json(inputs, counts, sf.out_path, command);
+    write_file_atomically(sidecar_path(sf.out_path),
+                          [&](std::ostream& out) { out << sidecar.dump(2) << "\n"; });
   });
-  std::cerr << "ivv sweep: wrote " << points.size() << " impacts to " << out_path;
-  if (failed) std::cerr << " (" << failed << " failed: see the status column)";
-  std::cerr << "\n";
-  return failed ? kExitFailure : 0;
+  if (!complete) {
+    std::cerr << "ivv sweep: interrupted: " << sink->done() << " of " << sink->total()
+              << " points done and kept in " << sink->journal_path().string()
+              << ". Resume with:\n  "
+              << (world ? "mpirun -np " + std::to_string(world->size()) + " ... " : "") << command
+              << (command.find(" --resume") == std::string::npos ? " --resume" : "") << "\n";
+    const int sig = g_sweep_signal.load();
+    return 128 + (sig ? sig : SIGINT);
+  }
+  const SweepCounts& c = sink->counts();
+  std::cerr << "ivv sweep: wrote " << sink->total() << " impacts to " << sf.out_path << " and "
+            << sidecar_path(sf.out_path).string() << " (" << c.separated << " separated, "
+            << c.captured << " captured, " << c.failed << " failed";
+  if (c.failed) std::cerr << ": see the reason column";
+  std::cerr << ")\n";
+  return c.failed ? kExitFailure : 0;
 }
 
 int run_scene_show(const std::string& scene_name, bool json) {
@@ -455,17 +527,23 @@ int main(int argc, char** argv) {
                   "write t, alpha, alpha_dot, y, z, F, tau, alpha_bar, F_bar to this CSV");
 
   ModelFlags sweep_flags;
-  std::string v0_grid, zeta_grid, out_path;
-  bool log = false;
-  int threads = 0;
-  auto* sweep = app.add_subcommand("sweep", "COR and peak force over a v0 x zeta grid, to CSV");
+  SweepFlags sf;
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "COR and peak force over a v0 x zeta grid, to CSV (+ a JSON sidecar); runs across MPI "
+      "ranks under mpirun");
   add_model_flags(*sweep, sweep_flags, false);
-  sweep->add_option("--v0", v0_grid, "velocities [m/s]: LO:HI:N or a,b,c")->required();
-  sweep->add_flag("--log", log, "logarithmic spacing of the LO:HI:N velocity grid");
-  sweep->add_option("--zeta", zeta_grid, "damping ratios: LO:HI:N or a,b,c (0 = no dashpot)")
+  sweep->add_option("--v0", sf.v0_grid, "velocities [m/s]: LO:HI:N or a,b,c")->required();
+  sweep->add_flag("--log", sf.log, "logarithmic spacing of the LO:HI:N velocity grid");
+  sweep->add_option("--zeta", sf.zeta_grid, "damping ratios: LO:HI:N or a,b,c (0 = no dashpot)")
       ->required();
-  sweep->add_option("--out", out_path, "output CSV")->required();
-  sweep->add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
+  sweep->add_option("--out", sf.out_path, "output CSV (the sidecar goes beside it: NAME.json)")
+      ->required();
+  sweep->add_option("--threads", sf.threads, "worker threads per process (0 = all cores)")
+      ->capture_default_str();
+  sweep->add_flag("--resume", sf.resume,
+                  "continue an interrupted sweep from its journal (OUT.journal)");
+  sweep->add_flag("-q,--quiet", sf.quiet, "no progress on stderr");
 
   auto* scene_cmd = app.add_subcommand("scene", "scene utilities");
   scene_cmd->require_subcommand(1);
@@ -553,7 +631,11 @@ int main(int argc, char** argv) {
 
   try {
     if (*sim) return run_simulate(sim_flags, json, trajectory);
-    if (*sweep) return run_sweep_command(sweep_flags, v0_grid, log, zeta_grid, out_path, threads);
+    if (*sweep) {
+      std::string command;
+      for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+      return run_sweep_command(sweep_flags, sf, command);
+    }
     if (*show) return run_scene_show(show_scene, show_json);
     if (*integrators) {
       for (IntegratorKind k : all_integrators()) {

@@ -75,6 +75,25 @@ nlohmann::json result_json(const ImpactResult& r) {
   return j;
 }
 
+nlohmann::json law_json(const SimulationRequest& req) {
+  const LawInfo& info = law_info(req.law);
+  nlohmann::json j = {{"law_summary", info.summary}};
+  // every parameter in use: given, or its default (from the scene where the spec says so)
+  nlohmann::json params = req.parameters;
+  if (req.law != LawKind::expression) {
+    const DerivedParameters p = derive(req.scene);
+    for (const ParameterSpec& spec : info.parameters)
+      params[std::string(spec.name)] = parameter_value(req.parameters, spec, p);
+  }
+  j["parameters"] = params.is_null() ? nlohmann::json::object() : params;
+  if (req.law == LawKind::expression) {
+    j["force"] = req.expression.force;
+    if (!req.expression.unload.empty()) j["unload"] = req.expression.unload;
+    j["allow_tension"] = req.expression.allow_tension;
+  }
+  return j;
+}
+
 nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult& r) {
   const DerivedParameters p = derive(req.scene);
   nlohmann::json request = {{"law", to_string(req.law)},
@@ -82,17 +101,11 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
                             {"rtol", req.options.rtol},
                             {"atol", req.options.atol}};
   if (req.integrator == IntegratorKind::rk4) request["dt"] = req.options.fixed_dt();
-  request["law_summary"] = law_info(req.law).summary;
-  if (!req.parameters.empty()) request["parameters"] = req.parameters;
-  if (req.law == LawKind::hunt_crossley) {  // the values in use, defaults included
-    const auto& spec = law_info(req.law).parameters;
-    request["hc_k"] = parameter_value(req.parameters, spec[0], p.K_h);
-    request["hc_mu"] = parameter_value(req.parameters, spec[1]);
-  }
-  if (req.law == LawKind::expression) {
-    request["force"] = req.expression.force;
-    if (!req.expression.unload.empty()) request["unload"] = req.expression.unload;
-    request["allow_tension"] = req.expression.allow_tension;
+  const nlohmann::json law = law_json(req);  // named: items() of a temporary would dangle
+  for (const auto& [key, value] : law.items()) request[key] = value;
+  if (req.law == LawKind::hunt_crossley) {  // the names of the contract (SPEC §5)
+    request["hc_k"] = request["parameters"]["K"];
+    request["hc_mu"] = request["parameters"]["mu"];
   }
   return {{"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
 }

@@ -12,6 +12,9 @@ namespace ivv {
 nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
 nlohmann::json result_json(const ImpactResult& r);
 // {"scene": ..., "request": ..., "result": ...}
+// The law of a request: its summary, every parameter in use (defaults included) and, for an
+// expression law, its expressions and contact end.
+nlohmann::json law_json(const SimulationRequest& req);
 nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult& r);
 
 }  // namespace ivv

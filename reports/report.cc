@@ -1,13 +1,12 @@
 #include "reports/report.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <set>
-#include <thread>
 
 #include "oracles/hunt_crossley.h"
 #include "reports/companions.h"
@@ -22,6 +21,7 @@
 #include "solver/atomic_file.h"
 #include "solver/input_error.h"
 #include "verification/examples.h"
+#include "solver/parallel.h"
 #include "verification/registry.h"
 
 namespace ivv::reports {
@@ -54,30 +54,20 @@ class FigureBook {
   void render(int threads, const SectionOptions& say) {
     svgs_.assign(figures_.size(), {});
     errors_.assign(figures_.size(), {});
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-      for (std::size_t i = next++; i < figures_.size(); i = next++) {
-        try {
-          svgs_[i] =
-              render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id);
-          const SvgCheck check = check_svg(svgs_[i]);
-          if (!check.ok())
-            errors_[i] = "gnuplot drew " + std::to_string(check.drawn_series) + " of " +
-                         std::to_string(check.series) + " series";
-        } catch (const std::exception& e) {
-          errors_[i] = e.what();
-        }
-      }
-    };
-    const int n = std::max(
-        1,
-        std::min<int>(threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()),
-                      static_cast<int>(figures_.size())));
     say.say("drawing " + std::to_string(figures_.size()) + " plots with gnuplot");
-    std::vector<std::thread> pool;
-    for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    // Each figure's error is recorded in its slot, so the loop itself does not throw.
+    parallel_for(figures_.size(), threads, [&](std::size_t i) {
+      try {
+        svgs_[i] =
+            render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id);
+        const SvgCheck check = check_svg(svgs_[i]);
+        if (!check.ok())
+          errors_[i] = "gnuplot drew " + std::to_string(check.drawn_series) + " of " +
+                       std::to_string(check.series) + " series";
+      } catch (const std::exception& e) {
+        errors_[i] = e.what();
+      }
+    });
   }
 
   std::string resolve(std::string html) const {
@@ -243,8 +233,7 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
   }
   item("run time",
        number(total, 3) + " s (" + stages + "), " +
-           std::to_string(opt.threads > 0 ? opt.threads
-                                          : static_cast<int>(std::thread::hardware_concurrency())) +
+           std::to_string(worker_count(std::numeric_limits<std::size_t>::max(), opt.threads)) +
            " threads" + (opt.quick ? ", quick mode (fewer sweep points)" : ""));
   out += "</dl>\n";
   return out;

@@ -16,6 +16,7 @@ packages=(
   libmuparser-dev                     # expression contact laws
   gnuplot-nox                         # report plots (SVG terminal)
   chromium fonts-dejavu-core          # the report's rendering test (headless), with a font
+  openmpi-bin libopenmpi-dev          # `mpirun -np N ivv sweep` (and its 2-rank test)
 )
 
 missing=()

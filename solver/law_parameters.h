@@ -10,6 +10,8 @@
 
 namespace ivv {
 
+struct DerivedParameters;
+
 // Named values [SI units as the law's ParameterSpec says]; absent names take their defaults.
 using LawParameters = std::map<std::string, double, std::less<>>;
 
@@ -18,14 +20,15 @@ struct ParameterSpec {
   std::string_view name;     // as typed after --param
   std::string_view unit;     // SI unit, e.g. "s/m"
   std::string_view meaning;  // one line, with the default when it comes from the scene
-  double default_value = std::numeric_limits<double>::quiet_NaN();  // NaN: from the scene
+  double default_value = std::numeric_limits<double>::quiet_NaN();  // NaN: from_scene
   double lower = 0.0;  // accepted closed range [lower, upper]
   double upper = std::numeric_limits<double>::infinity();
-  bool lower_open = false;  // (lower, upper] when true
+  bool lower_open = false;                                   // (lower, upper] when true
+  double (*from_scene)(const DerivedParameters&) = nullptr;  // default taken from the scene
 };
 
-// The value of `name` from `given`, else the spec's default, else `scene_default`.
+// The value of the parameter in `given`, else its default (from the scene when the spec says).
 double parameter_value(const LawParameters& given, const ParameterSpec& spec,
-                       double scene_default = std::numeric_limits<double>::quiet_NaN());
+                       const DerivedParameters& p);
 
 }  // namespace ivv

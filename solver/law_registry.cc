@@ -9,9 +9,9 @@
 namespace ivv {
 
 double parameter_value(const LawParameters& given, const ParameterSpec& spec,
-                       double scene_default) {
+                       const DerivedParameters& p) {
   if (auto it = given.find(spec.name); it != given.end()) return it->second;
-  return std::isnan(spec.default_value) ? scene_default : spec.default_value;
+  return spec.from_scene ? spec.from_scene(p) : spec.default_value;
 }
 
 namespace {

@@ -1,12 +1,12 @@
 #include "verification/registry.h"
 
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
+
+#include "solver/parallel.h"
 
 namespace ivv::verification {
 
@@ -167,24 +167,16 @@ std::vector<CaseRecord> run_cases(
     const std::vector<const Case*>& cases, int threads,
     const std::function<void(std::size_t, std::size_t, const Case&)>& progress) {
   std::vector<CaseRecord> records(cases.size());
-  std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex mutex;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < cases.size(); i = next++) {
-      records[i] = run_case(*cases[i]);
-      if (progress) {
-        std::lock_guard lock(mutex);
-        progress(++done, cases.size(), *cases[i]);
-      }
+  // run_case turns a throwing case into a failed record, so the loop itself does not throw.
+  parallel_for(cases.size(), threads, [&](std::size_t i) {
+    records[i] = run_case(*cases[i]);
+    if (progress) {
+      std::lock_guard lock(mutex);
+      progress(++done, cases.size(), *cases[i]);
     }
-  };
-  int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
-  n = std::max(1, std::min<int>(n, static_cast<int>(cases.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  });
   return records;
 }
 

@@ -26,13 +26,13 @@ struct HuntCrossleyLaw {
       "F = K z^{3/2} (1 + mu dz/dt), no series dashpot (paper eq. 27; Hunt & Crossley 1975)";
   static constexpr std::array<ParameterSpec, 2> parameters{{
       {"K", "N/m^1.5", "stiffness (default: the scene's Hertz stiffness K_h)",
-       std::numeric_limits<double>::quiet_NaN(), 0.0, std::numeric_limits<double>::infinity(),
-       true},
+       std::numeric_limits<double>::quiet_NaN(), 0.0, std::numeric_limits<double>::infinity(), true,
+       [](const DerivedParameters& p) { return p.K_h; }},
       {"mu", "s/m", "damping factor (default 0: Hertz)", 0.0, 0.0,
        std::numeric_limits<double>::infinity(), false},
   }};
   static HuntCrossleyLaw make(const LawParameters& given, const DerivedParameters& p) {
-    return {parameter_value(given, parameters[0], p.K_h), parameter_value(given, parameters[1])};
+    return {parameter_value(given, parameters[0], p), parameter_value(given, parameters[1], p)};
   }
 
   double K = 0.0;   // [N/m^1.5]

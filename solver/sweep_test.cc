@@ -1,0 +1,166 @@
+// Sweeps: the one validation, rows that can be re-run exactly, failed rows without numbers,
+// output independent of the thread count, and a journal that survives a torn last line.
+#include "solver/sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "solver/input_error.h"
+
+namespace ivv {
+namespace {
+
+namespace fs = std::filesystem;
+
+SweepRequest paper_grid(std::size_t nv, std::size_t nz) {
+  SweepRequest req;
+  req.base.scene = load_scene("paper");
+  req.velocities = log_grid(0.1, 10.0, static_cast<int>(nv));
+  req.zetas = linear_grid(0.0, 1.0, static_cast<int>(nz));
+  return req;
+}
+
+std::string field_of(const SweepRequest& req) {
+  try {
+    validate(req);
+  } catch (const InputError& e) {
+    return e.field();
+  }
+  return "";
+}
+
+TEST(SweepValidate, HuntCrossleyWithADashpotIsBadInputNamingZeta) {
+  SweepRequest req = paper_grid(2, 2);  // zetas 0 and 1
+  req.base.law = LawKind::hunt_crossley;
+  EXPECT_EQ(field_of(req), "--zeta");
+  req.zetas = {0.0};
+  EXPECT_EQ(field_of(req), "");
+}
+
+TEST(SweepValidate, HugeGridIsRefusedBeforeAnythingIsAllocated) {
+  SweepRequest req = paper_grid(1, 1);
+  req.velocities.assign(1'000'000, 1.0);
+  req.zetas.assign(1'000'000, 0.1);  // 1e12 points: run_sweep would need ~1e15 bytes
+  EXPECT_EQ(field_of(req), "--v0");
+  EXPECT_THROW(run_sweep(req), InputError);
+}
+
+TEST(SweepValidate, NonFiniteOrNegativeValuesNameTheirFlag) {
+  SweepRequest req = paper_grid(2, 2);
+  req.velocities[1] = -1.0;
+  EXPECT_EQ(field_of(req), "--v0");
+  req = paper_grid(2, 2);
+  req.zetas[1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(field_of(req), "--zeta");
+}
+
+TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
+  ImpactResult failed;
+  failed.status = ImpactStatus::failed;
+  failed.reason = "step size underflow, \"quoted\"";
+  failed.e = 0.0;  // what a failed result holds; it must not reach the CSV
+  failed.steps = 12;
+  const std::string row = sweep_csv_row(0.1, 1.0 / 3.0, failed);
+  EXPECT_EQ(row,
+            "0.10000000000000001,0.33333333333333331,,,,,,,,,,,12,failed,"
+            "\"step size underflow, \"\"quoted\"\"\"\n");
+  // 17 significant digits read back to the same double.
+  EXPECT_EQ(std::stod("0.33333333333333331"), 1.0 / 3.0);
+
+  ImpactResult ok;
+  ok.status = ImpactStatus::separated;
+  ok.e = 0.5;
+  EXPECT_EQ(sweep_csv_row(1.0, 0.0, ok), "1,0,0.5,0,0,0,0,0,0,0,0,0,0,separated,\n");
+}
+
+TEST(SweepRun, ResultsAreIdenticalForAnyThreadCount) {
+  SweepRequest req = paper_grid(6, 4);
+  req.threads = 1;
+  const auto one = run_sweep(req);
+  req.threads = 3;
+  const auto three = run_sweep(req);
+  ASSERT_EQ(one.size(), three.size());
+  for (std::size_t i = 0; i < one.size(); ++i)
+    EXPECT_EQ(sweep_csv_row(one[i].v0, one[i].zeta, one[i].result),
+              sweep_csv_row(three[i].v0, three[i].zeta, three[i].result))
+        << i;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("ivv_sweep_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string run_to_csv(const SweepRequest& req, const fs::path& csv, bool resume) {
+  SweepSink sink(req, {csv, resume, "test"});
+  run_sweep_points(req, sink, {});
+  EXPECT_TRUE(sink.finish({}));
+  EXPECT_FALSE(fs::exists(sink.journal_path()));
+  return slurp(csv);
+}
+
+TEST(SweepSink, StreamedCsvEqualsTheInMemoryRows) {
+  SweepRequest req = paper_grid(5, 3);
+  std::string expected = sweep_csv_header();
+  for (const auto& p : run_sweep(req)) expected += sweep_csv_row(p.v0, p.zeta, p.result);
+  EXPECT_EQ(run_to_csv(req, scratch("stream.csv"), false), expected);
+}
+
+TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
+  SweepRequest req = paper_grid(5, 3);
+  req.threads = 2;
+  const std::string expected = run_to_csv(req, scratch("whole.csv"), false);
+
+  // An interrupted run: points 0-5 and 9 finished (journal), then a torn line (SIGKILL in the
+  // middle of a write).
+  const fs::path csv = scratch("torn.csv");
+  {
+    SweepSink sink(req, {csv, false, "test"});
+    for (std::size_t i : {0, 1, 2, 3, 4, 5, 9}) sink.deliver(i, run_sweep_point(req, i));
+    EXPECT_FALSE(sink.finish({}));
+  }
+  { std::ofstream(fs::path(csv.string() + ".journal"), std::ios::app) << "11 0.1,0.5,0.3"; }
+
+  // Without --resume an existing journal is refused; another sweep's journal too.
+  EXPECT_THROW(SweepSink(req, {csv, false, "test"}), InputError);
+  EXPECT_THROW(SweepSink(req, {csv, true, "another sweep"}), InputError);
+
+  SweepSink sink(req, {csv, true, "test"});
+  EXPECT_EQ(sink.resumed(), 7u);
+  std::vector<std::size_t> computed;
+  for (auto chunk = sink.take(100, true); !chunk.empty(); chunk = sink.take(100, true))
+    for (std::size_t i : chunk) {
+      computed.push_back(i);
+      sink.deliver(i, run_sweep_point(req, i));
+    }
+  EXPECT_EQ(computed, (std::vector<std::size_t>{6, 7, 8, 10, 11, 12, 13, 14}));
+  ASSERT_TRUE(sink.finish({}));
+  EXPECT_EQ(slurp(csv), expected);
+}
+
+TEST(SweepSink, WindowBoundsHowFarAheadWorkIsHandedOut) {
+  SweepRequest req = paper_grid(10, 1);
+  SweepOutputOptions opt{scratch("window.csv"), false, "test"};
+  opt.window = 4;
+  SweepSink sink(req, opt);
+  EXPECT_EQ(sink.take(100, false), (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_TRUE(sink.take(100, false).empty());  // point 0 unfinished: nothing further
+  EXPECT_FALSE(sink.exhausted());
+  sink.deliver(0, run_sweep_point(req, 0));
+  EXPECT_EQ(sink.take(100, false), (std::vector<std::size_t>{4}));
+}
+
+}  // namespace
+}  // namespace ivv
