@@ -3,7 +3,9 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -68,6 +70,26 @@ TEST(Cli, IntegratorsListsOnePerLine) {
   EXPECT_EQ(r.out, "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
 }
 
+// A rigid target without a yield strength and the Hertz law: the Hertz closed form (SPEC §2)
+// z_m = (5 m v0^2/(4 K_h))^{2/5}, t_f = 2.9432752 z_m/v0, e = 1, with E* = E1/(1 - nu1^2).
+TEST(Cli, RigidTargetHertzGivesClosedForm) {
+  const CliRun r = ivv("simulate --scene chung-ooi-2-aluminium --law hertz --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double m = j["scene"]["mass"], v0 = j["scene"]["v0"];
+  const double E_star = 70e9 / (1 - 0.33 * 0.33);
+  EXPECT_NEAR(j["scene"]["E_star"].get<double>() / E_star, 1.0, 1e-15);
+  EXPECT_TRUE(j["scene"]["rigid_target"].get<bool>());
+  EXPECT_TRUE(j["scene"]["K_y"].is_null());
+  const double K_h = 4.0 / 3.0 * std::sqrt(0.1) * E_star;
+  const double z_m = std::pow(5 * m * v0 * v0 / (4 * K_h), 0.4);
+  // default rtol 1e-10 per step, ~170 steps: 1e-7 (tolerances.h)
+  EXPECT_NEAR(j["result"]["z_max"].get<double>() / z_m, 1.0, 1e-7);
+  EXPECT_NEAR(j["result"]["t_contact"].get<double>() / (2.9432752 * z_m / v0), 1.0, 1e-7);
+  EXPECT_NEAR(j["result"]["e"].get<double>(), 1.0, 1e-7);
+  EXPECT_EQ(j["result"]["bodies"]["target_velocity_after"].get<double>(), 0.0);
+}
+
 TEST(Cli, SceneShowPrintsDerivedParameters) {
   const CliRun r = ivv("scene show --scene paper");
   ASSERT_EQ(r.exit_code, 0);
@@ -130,8 +152,19 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"negative_hc_mu", "simulate --scene paper --law hunt-crossley --hc-mu -1", "--hc-mu"},
         Bad{"bad_rtol", "simulate --scene paper --rtol 2", "--rtol"},
         Bad{"zeta_and_c", "simulate --scene paper --zeta 0.1 --c 100", "excludes"},
-        Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv",
-            "--v0"}),
+        Bad{"bad_grid", "sweep --scene paper --v0 1:2 --zeta 0.1 --out /tmp/ivv_never.csv", "--v0"},
+        Bad{"elastoplastic_without_yield", "simulate --scene chung-ooi-2-aluminium",
+            "target.yield_strength: required by the elastoplastic law"},
+        Bad{"linearized_without_yield",
+            "simulate --scene chung-ooi-2-aluminium --law linearized --json",
+            "target.yield_strength: required by the linearized law"},
+        Bad{"zeta_without_yield", "simulate --scene chung-ooi-2-aluminium --law hertz --zeta 0.1",
+            "damping.zeta"},
+        Bad{"unknown_shipped_scene", "simulate --scene no-such-scene", "--scene"},
+        Bad{"sweep_zeta_without_yield",
+            "sweep --scene chung-ooi-2-aluminium --law hertz --v0 0.1:1:2 --zeta 0,0.1 --out "
+            "/tmp/ivv_never.csv",
+            "--zeta"}),
     [](const auto& info) { return std::string(info.param.label); });
 
 TEST(Cli, BadSweepLeavesNoFile) {
@@ -159,10 +192,58 @@ TEST(Cli, EveryShippedSceneFileRuns) {
   for (const auto& entry : fs::directory_iterator(IVV_SCENES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
     ++scenes;
-    const CliRun r = ivv("simulate --json --scene " + entry.path().string());
+    // a scene without a yield strength is elastic: it runs with a law without yield
+    const CliRun show = ivv("scene show --json --scene " + entry.path().string());
+    ASSERT_EQ(show.exit_code, 0) << entry.path() << ": " << show.err;
+    const bool elastic = nlohmann::json::parse(show.out)["yield_strength"].is_null();
+    const CliRun r =
+        ivv("simulate --json --scene " + entry.path().string() + (elastic ? " --law hertz" : ""));
     EXPECT_EQ(r.exit_code, 0) << entry.path() << ": " << r.err;
   }
-  EXPECT_GE(scenes, 2);
+  EXPECT_GE(scenes, 6);
+}
+
+// Shipped scenes by name: from the source tree, and from $IVV_DATA_DIR (as after install).
+TEST(Cli, ShippedSceneByNameAndFromDataDir) {
+  EXPECT_EQ(ivv("scene show --scene chung-ooi-2-magnesium").exit_code, 0);
+  const fs::path dir = scratch("data");
+  fs::create_directories(dir / "scenes");
+  fs::copy_file(fs::path(IVV_SCENES_DIR) / "chung-ooi-2-magnesium.toml",
+                dir / "scenes" / "only-in-data-dir.toml", fs::copy_options::overwrite_existing);
+  EXPECT_NE(ivv("scene show --scene only-in-data-dir").exit_code, 0);
+  setenv("IVV_DATA_DIR", dir.c_str(), 1);
+  const CliRun r = ivv("scene show --scene only-in-data-dir");
+  unsetenv("IVV_DATA_DIR");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(Cli, SceneShowSaysRigidTargetAndEffectiveBody) {
+  const CliRun rigid = ivv("scene show --scene chung-ooi-2-aluminium");
+  ASSERT_EQ(rigid.exit_code, 0) << rigid.err;
+  EXPECT_NE(rigid.out.find("rigid target"), std::string::npos) << rigid.out;
+  EXPECT_NE(rigid.out.find("no yield strength"), std::string::npos) << rigid.out;
+  const CliRun pair = ivv("scene show --scene chung-ooi-1-glass");
+  ASSERT_EQ(pair.exit_code, 0) << pair.err;
+  for (const char* s : {"R*     = 0.005 m", "m*", "free sphere"})
+    EXPECT_NE(pair.out.find(s), std::string::npos) << s << " in " << pair.out;
+}
+
+// Two identical spheres, e = 1: they exchange velocities (target frame); momentum m1 v0 is
+// conserved to rounding and the printed summary gives both bodies.
+TEST(Cli, TwoSpheresGiveBothBodyVelocities) {
+  const CliRun r = ivv("simulate --scene chung-ooi-1-glass --law hertz --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double m1 = j["scene"]["mass"], m2 = j["scene"]["target_mass"], v0 = j["scene"]["v0"];
+  const double v1 = j["result"]["bodies"]["impactor_velocity_after"];
+  const double v2 = j["result"]["bodies"]["target_velocity_after"];
+  EXPECT_NEAR(m1 * v1 + m2 * v2, m1 * v0, 4e-16 * m1 * v0);
+  // e = 1 to the default rtol 1e-10 per step over ~170 steps (1e-7, as the analytic cases)
+  EXPECT_NEAR(v1, 0.0, 1e-7 * v0);
+  EXPECT_NEAR(v2, v0, 1e-7 * v0);
+  EXPECT_NEAR(j["scene"]["effective_mass"].get<double>(), m1 / 2, 1e-16);
+  const CliRun text = ivv("simulate --scene chung-ooi-1-glass --law hertz");
+  EXPECT_NE(text.out.find("after impact impactor"), std::string::npos) << text.out;
 }
 
 TEST(Cli, FitHcReproducesTheTargets) {

@@ -58,8 +58,8 @@ struct ModelFlags {
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
                      bool scene_required = true) {
-  auto* scene =
-      cmd.add_option("--scene", f.scene, "scene file (TOML, SPEC §5) or 'paper' (Table 1)");
+  auto* scene = cmd.add_option(
+      "--scene", f.scene, "scene file (TOML, SPEC §5), 'paper' (Table 1), or a shipped scene's name");
   if (scene_required) scene->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
@@ -90,7 +90,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
   cmd.add_option("--dt", f.dt,
-                 "fixed step of rk4 in normalised time tau = omega0 t (default 1e-3)");
+                 "fixed step of rk4 in normalised time tau = omega t (default 1e-3; omega = "
+                 "omega0 for laws with yield, v0/z_mH for hertz and hunt-crossley)");
   cmd.add_option("--max-steps", f.max_steps, "give up after this many steps")
       ->capture_default_str();
   cmd.add_option("--hc-k", f.hc_k,
@@ -152,9 +153,13 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   out << std::setprecision(6);
   out << "scene " << req.scene.name << ", law " << to_string(req.law) << ", integrator "
       << to_string(req.integrator) << "\n";
-  out << "  v0 = " << req.scene.velocity << " m/s (v_y = " << p.v_yield << " m/s), ";
-  if (p.has_dashpot())
+  out << "  v0 = " << req.scene.velocity << " m/s";
+  if (p.has_yield()) out << " (v_y = " << p.v_yield << " m/s)";
+  out << ", ";
+  if (p.has_dashpot() && p.has_yield())
     out << "zeta = " << p.zeta << " (c = " << p.c << " N s/m)\n";
+  else if (p.has_dashpot())
+    out << "c = " << p.c << " N s/m\n";
   else
     out << "no dashpot\n";
   out << "  status       " << to_string(r.status);
@@ -174,7 +179,11 @@ void print_summary(std::ostream& out, const SimulationRequest& req, const Impact
   if (r.energy.stored > 0) out << " + stored " << r.energy.stored;
   out << " + residual " << r.energy.residual << "\n";
   out << "  impulse      " << r.impulse
-      << " N s (m v0 (1 + e) = " << req.scene.mass * req.scene.velocity * (1 + r.e) << ")\n";
+      << " N s (m* v0 (1 + e) = " << p.effective_mass * req.scene.velocity * (1 + r.e) << ")\n";
+  if (req.scene.free_target()) {
+    out << "  after impact impactor " << r.impactor_velocity_after << " m/s, target "
+        << r.target_velocity_after << " m/s (frame: target at rest before; + towards it)\n";
+  }
   out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
 }
 
@@ -321,19 +330,39 @@ int run_scene_show(const std::string& scene_name, bool json) {
   std::cout << std::setprecision(6) << "scene " << s.name << "\n"
             << "  impactor  m = " << s.mass << " kg, R = " << s.radius
             << " m, E1 = " << s.impactor_youngs_modulus << " Pa, nu1 = " << s.impactor_poisson_ratio
-            << "\n"
-            << "  target    E2 = " << s.target_youngs_modulus
-            << " Pa, nu2 = " << s.target_poisson_ratio << ", S_y = " << s.yield_strength << " Pa\n"
-            << "  impact    v0 = " << s.velocity << " m/s\n"
+            << "\n";
+  std::cout << "  target    ";
+  if (s.free_target())
+    std::cout << "free sphere m2 = " << *s.target_mass << " kg, R2 = " << *s.target_radius
+              << " m, ";
+  else
+    std::cout << "half-space, ";
+  if (s.rigid_target())
+    std::cout << "rigid target (E2 = inf)";
+  else
+    std::cout << "E2 = " << s.target_youngs_modulus << " Pa, nu2 = " << s.target_poisson_ratio;
+  if (s.yield_strength)
+    std::cout << ", S_y = " << *s.yield_strength << " Pa\n";
+  else
+    std::cout << ", no yield strength (laws without yield only: hertz, hunt-crossley)\n";
+  std::cout << "  impact    v0 = " << s.velocity << " m/s"
+            << (s.free_target() ? " (relative approach speed)" : "") << "\n"
             << "derived\n"
-            << "  E*     = " << p.E_star << " Pa\n"
-            << "  K_h    = " << p.K_h << " N/m^1.5\n"
-            << "  z_y    = " << p.z_y << " m\n"
-            << "  K_y    = " << p.K_y << " N/m\n"
-            << "  omega0 = " << p.omega0 << " rad/s\n"
-            << "  v_y    = " << p.v_yield << " m/s\n";
-  if (p.has_dashpot())
+            << "  R*     = " << p.effective_radius << " m\n"
+            << "  m*     = " << p.effective_mass << " kg\n"
+            << "  E*     = " << p.E_star << " Pa" << (s.rigid_target() ? " (rigid target)" : "")
+            << "\n"
+            << "  K_h    = " << p.K_h << " N/m^1.5\n";
+  if (p.has_yield()) {
+    std::cout << "  z_y    = " << p.z_y << " m\n"
+              << "  K_y    = " << p.K_y << " N/m\n"
+              << "  omega0 = " << p.omega0 << " rad/s\n"
+              << "  v_y    = " << p.v_yield << " m/s\n";
+  }
+  if (p.has_dashpot() && p.has_yield())
     std::cout << "  zeta   = " << p.zeta << ", c = " << p.c << " N s/m\n";
+  else if (p.has_dashpot())
+    std::cout << "  c      = " << p.c << " N s/m\n";
   else
     std::cout << "  no dashpot (c = inf, zeta = 0)\n";
   return 0;

@@ -1,6 +1,7 @@
 #include "app/result_json.h"
 
 #include <cmath>
+#include <optional>
 
 namespace ivv {
 namespace {
@@ -11,24 +12,32 @@ nlohmann::json finite_or_null(double v) {
 }  // namespace
 
 nlohmann::json scene_json(const Scene& s, const DerivedParameters& p) {
+  auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nullptr; };
+  // yield-related values are null without a yield strength; target_youngs_modulus is null
+  // (and rigid_target true) for a rigid target
   return {
       {"name", s.name},
       {"mass", s.mass},
       {"radius", s.radius},
       {"impactor_youngs_modulus", s.impactor_youngs_modulus},
       {"impactor_poisson_ratio", s.impactor_poisson_ratio},
-      {"target_youngs_modulus", s.target_youngs_modulus},
+      {"target_youngs_modulus", finite_or_null(s.target_youngs_modulus)},
       {"target_poisson_ratio", s.target_poisson_ratio},
-      {"yield_strength", s.yield_strength},
+      {"rigid_target", s.rigid_target()},
+      {"target_radius", optional(s.target_radius)},
+      {"target_mass", optional(s.target_mass)},
+      {"yield_strength", optional(s.yield_strength)},
       {"v0", s.velocity},
+      {"effective_radius", p.effective_radius},
+      {"effective_mass", p.effective_mass},
       {"E_star", p.E_star},
       {"K_h", p.K_h},
-      {"z_y", p.z_y},
-      {"K_y", p.K_y},
-      {"omega0", p.omega0},
-      {"zeta", p.zeta},
+      {"z_y", finite_or_null(p.z_y)},
+      {"K_y", finite_or_null(p.K_y)},
+      {"omega0", finite_or_null(p.omega0)},
+      {"zeta", finite_or_null(p.zeta)},
       {"c", finite_or_null(p.c)},
-      {"v_yield", p.v_yield},
+      {"v_yield", finite_or_null(p.v_yield)},
   };
 }
 
@@ -57,6 +66,10 @@ nlohmann::json result_json(const ImpactResult& r) {
       {"y_final", r.y_final},
       {"t_contact", r.t_contact},
       {"rebound_velocity", r.rebound_velocity},
+      // frame: the target at rest before impact; positive towards the target
+      {"bodies",
+       {{"impactor_velocity_after", r.impactor_velocity_after},
+        {"target_velocity_after", r.target_velocity_after}}},
       {"impulse", r.impulse},
       {"impulse_compression", r.impulse_compression},
       {"energy",

@@ -139,7 +139,7 @@ double damping_ratio(double mass, double K_y, double c) {
 }
 
 LinearModelInput linear_model_input(const Scene& scene, const DerivedParameters& p) {
-  return {scene.mass, p.K_h, p.K_y, p.zeta, scene.velocity};
+  return {p.effective_mass, p.K_h, p.K_y, p.zeta, scene.velocity};
 }
 
 LinearizedLawUndefined::LinearizedLawUndefined(double z_max, double z_min)

@@ -61,7 +61,8 @@ struct LinearModelInput {
 // zeta of eq 23 for a dashpot c [N s/m]; c = +inf gives 0.
 double damping_ratio(double mass, double K_y, double c);
 
-// The input for a scene: m and v0 from the scene, K_h, K_y, zeta from its derived parameters.
+// The input for a scene: v0 from the scene; m* (the effective mass), K_h, K_y, zeta from its
+// derived parameters.
 LinearModelInput linear_model_input(const Scene& scene, const DerivedParameters& p);
 
 // Thrown when the linearized law has no meaning: z_m < (K_y/K_h)^2 makes eq 17 take a

@@ -104,7 +104,7 @@ Quadrature unloading_leg_time(double mass, double K_h, double z_m, double z_f, d
 }  // namespace
 
 ElastoplasticInput elastoplastic_input(const Scene& scene, const DerivedParameters& p) {
-  return {scene.mass, p.K_h, p.z_y, scene.velocity};
+  return {p.effective_mass, p.K_h, p.z_y, scene.velocity};
 }
 
 ElastoplasticImpact solve_undamped_elastoplastic(const ElastoplasticInput& in) {

@@ -10,6 +10,7 @@
 
 #include "oracles/hunt_crossley.h"
 #include "reports/companions.h"
+#include "reports/dem_benchmark.h"
 #include "reports/figure.h"
 #include "reports/gnuplot_svg.h"
 #include "reports/html.h"
@@ -529,7 +530,7 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
 }
 
 std::string companions_html() {
-  return "<h2 id=\"companions\">7. Machine-readable companions</h2>\n"
+  return "<h2 id=\"companions\">8. Machine-readable companions</h2>\n"
          "<p>Beside this page, in the same directory:</p><ul>\n"
          "<li><a href=\"results.json\"><code>results.json</code></a>: "
          "<code>{\"cases\": [{\"id\", \"title\", \"tier\", \"passed\", \"measured\", "
@@ -606,6 +607,9 @@ ReportSummary write_report(const ReportOptions& opt) {
   const std::string examples = section("contact-law worked examples", examples_html);
   const std::string cases = cases_html(records, book);
   const std::string speed = section("speed against error", speed_html);
+  const std::string dem = section("DEM benchmark", [&](const SectionOptions&, FigureBook&) {
+    return dem_benchmark_html(records);
+  });
 
   t0 = Clock::now();
   book.render(opt.threads, so);
@@ -625,6 +629,7 @@ ReportSummary write_report(const ReportOptions& opt) {
       "<li><a href=\"#examples\">Contact-law worked examples</a></li>"
       "<li><a href=\"#cases\">Every verification case</a></li>"
       "<li><a href=\"#speed\">Speed against error</a></li>"
+      "<li><a href=\"#dem\">DEM benchmark: Chung &amp; Ooi (2011)</a></li>"
       "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
   body += summary_html(records, prov, opt, section_errors, stages);
   body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
@@ -632,6 +637,7 @@ ReportSummary write_report(const ReportOptions& opt) {
   body += "<h2 id=\"examples\">4. Contact-law worked examples</h2>\n" + examples;
   body += cases;
   body += "<h2 id=\"speed\">6. Speed against error</h2>\n" + speed;
+  body += dem;
   body += companions_html();
   const std::string html = page("ivv verification report", book.resolve(body));
 

@@ -7,7 +7,8 @@
 //   4. Every verification case of verification::all_cases() matching the filter, run on all
 //      cores, in tables per tier with an expandable detail and the case's plots.
 //   5. Speed against error (reports/speed_error.h).
-//   6. Machine-readable companions beside index.html (reports/companions.h): results.json,
+//   6. The DEM benchmark of Chung & Ooi (2011) (reports/dem_benchmark.h).
+//   7. Machine-readable companions beside index.html (reports/companions.h): results.json,
 //      series.csv (every plotted series: plot_id,series,x,y) and junit.xml.
 // Every file is written atomically (solver/atomic_file.h).
 #pragma once

@@ -11,6 +11,7 @@
 
 #include "oracles/undamped_elastoplastic.h"
 #include "reports/companions.h"
+#include "reports/dem_benchmark.h"
 #include "reports/gnuplot_svg.h"
 #include "reports/html.h"
 #include "reports/paper_figures.h"
@@ -18,6 +19,7 @@
 #include "reports/restitution.h"
 #include "solver/input_error.h"
 #include "solver/scene.h"
+#include "verification/cases.h"
 
 namespace ivv::reports {
 namespace {
@@ -195,6 +197,23 @@ TEST(WriteReport, RejectsAnOutputPathThatIsAFile) {
   o.out_dir.clear();
   EXPECT_THROW(write_report(o), InputError);
   fs::remove(file);
+}
+
+// The DEM section lists every Chung & Ooi scene with its closed form, and the verdict of the
+// dem.* cases that were run (here one), with "—" for those that were not.
+TEST(DemBenchmark, ShowsScenesClosedFormAndCaseVerdicts) {
+  const auto cases = verification::all_cases().matching("dem.chung-ooi-2-aluminium.odeint-dopri5");
+  ASSERT_EQ(cases.size(), 1u);
+  const auto records = verification::run_cases(cases, 1);
+  const std::string html = dem_benchmark_html(records);
+  for (const auto& t : verification::chung_ooi_scenes())
+    EXPECT_NE(html.find(std::string(t.scene)), std::string::npos) << t.scene;
+  EXPECT_NE(html.find("0.0493088"), std::string::npos);  // z_m [mm], Al alloy on a rigid plane
+  EXPECT_NE(html.find("case-dem-chung-ooi-2-aluminium-odeint-dopri5"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"pass\">pass</span>"), std::string::npos);
+  EXPECT_NE(html.find("—"), std::string::npos);
+  EXPECT_NE(dem_benchmark_html({}).find("No <code>dem.chung-ooi-*</code> case was run"),
+            std::string::npos);
 }
 
 TEST(WriteReport, RejectsAFilterMatchingNoCase) {

@@ -53,19 +53,25 @@ struct ImpactResult {
   FailureKind failure = FailureKind::none;
   std::string reason;  // why it failed (empty otherwise)
 
-  double e = 0.0;                    // Newton COR, -alpha_dot(t_f)/v0
-  double e_poisson = 0.0;            // restitution impulse / compression impulse
-  double e_energetic = 0.0;          // sqrt(restitution work / compression work)
-  double F_max = 0.0;                // [N]
-  double t_F_max = 0.0;              // [s]
-  double z_max = 0.0;                // maximum spring deformation z_m [m]
-  double t_z_max = 0.0;              // [s]
-  double alpha_max = 0.0;            // maximum impactor displacement alpha_c [m]
-  double t_alpha_max = 0.0;          // [s]
-  double z_perm = 0.0;               // permanent spring set z_f [m]
-  double y_final = 0.0;              // dashpot displacement at the end [m]
-  double t_contact = 0.0;            // [s] (capture: time the capture criterion was met)
-  double rebound_velocity = 0.0;     // alpha_dot at the end [m/s] (< 0: moving away)
+  double e = 0.0;                 // Newton COR, -alpha_dot(t_f)/v0
+  double e_poisson = 0.0;         // restitution impulse / compression impulse
+  double e_energetic = 0.0;       // sqrt(restitution work / compression work)
+  double F_max = 0.0;             // [N]
+  double t_F_max = 0.0;           // [s]
+  double z_max = 0.0;             // maximum spring deformation z_m [m]
+  double t_z_max = 0.0;           // [s]
+  double alpha_max = 0.0;         // maximum impactor displacement alpha_c [m]
+  double t_alpha_max = 0.0;       // [s]
+  double z_perm = 0.0;            // permanent spring set z_f [m]
+  double y_final = 0.0;           // dashpot displacement at the end [m]
+  double t_contact = 0.0;         // [s] (capture: time the capture criterion was met)
+  double rebound_velocity = 0.0;  // alpha_dot at the end [m/s] (< 0: moving away); the
+                                  // relative velocity when the target is a free sphere
+  // Each body's velocity after the impact [m/s], in the frame where the target was at rest
+  // before, positive towards the target: m1 v1 + m2 v2 = m1 v0 (Scene::body_velocities_after).
+  // A fixed target (half-space) stays at 0 and the impactor leaves at rebound_velocity.
+  double impactor_velocity_after = 0.0;
+  double target_velocity_after = 0.0;
   double impulse = 0.0;              // int F dt [N s]
   double impulse_compression = 0.0;  // int_0^{t_c} F dt [N s]
   EnergyLedger energy;

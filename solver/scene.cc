@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
 #include <set>
@@ -22,6 +23,28 @@ void require_poisson(const std::string& field, double nu) {
   require(std::isfinite(nu) && nu > -1.0 && nu < 0.5, field, "a Poisson's ratio in (-1, 0.5)", nu);
 }
 
+// The target: a half-space or a free sphere, elastic or rigid, with or without a yield strength.
+void validate_target(const Scene& s) {
+  const double E2 = s.target_youngs_modulus;
+  require(E2 > 0.0 && !std::isnan(E2), "target.youngs_modulus",
+          "a number > 0 Pa (inf: a rigid target)", E2);
+  require_poisson("target.poisson_ratio", s.target_poisson_ratio);
+  if (s.yield_strength) {
+    require_positive_finite("target.yield_strength", *s.yield_strength, "Pa");
+  }
+  if (s.target_radius.has_value() != s.target_mass.has_value()) {
+    throw InputError(s.target_radius ? "target.mass" : "target.radius",
+                     "a free target sphere needs both radius and mass (neither: a half-space)");
+  }
+  if (s.target_radius) require_positive_finite("target.radius", *s.target_radius, "m");
+  if (s.target_mass) require_positive_finite("target.mass", *s.target_mass, "kg");
+  if (s.damping.kind == Damping::Kind::ratio && !s.yield_strength) {
+    throw InputError("damping.zeta",
+                     "a damping ratio is defined with K_y = 1.5 K_h sqrt(z_y) and needs "
+                     "target.yield_strength; give damping.c [N s/m] (--c) instead");
+  }
+}
+
 }  // namespace
 
 void validate(const Scene& s) {
@@ -29,9 +52,7 @@ void validate(const Scene& s) {
   require_positive_finite("impactor.radius", s.radius, "m");
   require_positive_finite("impactor.youngs_modulus", s.impactor_youngs_modulus, "Pa");
   require_poisson("impactor.poisson_ratio", s.impactor_poisson_ratio);
-  require_positive_finite("target.youngs_modulus", s.target_youngs_modulus, "Pa");
-  require_poisson("target.poisson_ratio", s.target_poisson_ratio);
-  require_positive_finite("target.yield_strength", s.yield_strength, "Pa");
+  validate_target(s);
   require_positive_finite("impact.velocity", s.velocity, "m/s");
   switch (s.damping.kind) {
     case Damping::Kind::none:
@@ -47,21 +68,29 @@ void validate(const Scene& s) {
 
 DerivedParameters derive(const Scene& s) {
   DerivedParameters p;
+  p.effective_radius =
+      s.target_radius ? s.radius * *s.target_radius / (s.radius + *s.target_radius) : s.radius;
+  p.effective_mass = s.target_mass ? s.mass * *s.target_mass / (s.mass + *s.target_mass) : s.mass;
+  const double R = p.effective_radius, m = p.effective_mass;
+  // a rigid target (E2 = inf) adds no compliance: (1 - nu2^2)/inf = 0
   const double compliance =
       (1.0 - s.impactor_poisson_ratio * s.impactor_poisson_ratio) / s.impactor_youngs_modulus +
       (1.0 - s.target_poisson_ratio * s.target_poisson_ratio) / s.target_youngs_modulus;
-  p.E_star = 1.0 / compliance;                         // eq. 7
-  p.K_h = 4.0 / 3.0 * std::sqrt(s.radius) * p.E_star;  // eq. 6
-  const double pi2 = std::numbers::pi * std::numbers::pi;
-  p.z_y = 0.68 * s.yield_strength * s.yield_strength * pi2 * s.radius /  // eq. 11
-          (p.E_star * p.E_star);
-  p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);             // eq. 12
-  p.omega0 = std::sqrt(p.K_y / s.mass);               // eq. 23
-  const double critical = std::sqrt(s.mass * p.K_y);  // 2 c zeta
+  p.E_star = 1.0 / compliance;                  // eq. 7
+  p.K_h = 4.0 / 3.0 * std::sqrt(R) * p.E_star;  // eq. 6
+  if (s.yield_strength) {
+    const double Sy = *s.yield_strength;
+    const double pi2 = std::numbers::pi * std::numbers::pi;
+    p.z_y = 0.68 * Sy * Sy * pi2 * R / (p.E_star * p.E_star);  // eq. 11
+    p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);                    // eq. 12
+    p.omega0 = std::sqrt(p.K_y / m);                           // eq. 23
+    p.v_yield = std::sqrt(4.0 * p.K_h * std::pow(p.z_y, 2.5) / (5.0 * m));
+  }
+  const double critical = std::sqrt(m * p.K_y);  // 2 c zeta (NaN without a yield strength)
   switch (s.damping.kind) {
     case Damping::Kind::none:
       break;
-    case Damping::Kind::ratio:
+    case Damping::Kind::ratio:  // validate() requires a yield strength for it
       p.zeta = s.damping.value;
       p.c = critical / (2.0 * p.zeta);
       break;
@@ -70,18 +99,38 @@ DerivedParameters derive(const Scene& s) {
       p.zeta = critical / (2.0 * p.c);
       break;
   }
-  p.v_yield = std::sqrt(4.0 * p.K_h * std::pow(p.z_y, 2.5) / (5.0 * s.mass));
   return p;
 }
 
-Scales scales(const Scene& s, const DerivedParameters& p) {
+Scales scales(const Scene& s, const DerivedParameters& p, ScaleBasis basis) {
+  const double m = p.effective_mass, v0 = s.velocity;
+  double omega = 0.0;
+  switch (basis) {
+    case ScaleBasis::yield:
+      if (!p.has_yield()) {
+        throw InputError("target.yield_strength",
+                         "missing: the yield-based scales (omega0 = sqrt(K_y/m)) need it");
+      }
+      omega = p.omega0;
+      break;
+    case ScaleBasis::hertz:
+      omega = v0 / std::pow(5.0 * m * v0 * v0 / (4.0 * p.K_h), 0.4);  // v0/z_mH
+      break;
+  }
   Scales k;
-  k.time = 1.0 / p.omega0;
-  k.length = s.velocity / p.omega0;
-  k.velocity = s.velocity;
-  k.force = s.mass * s.velocity * p.omega0;
-  k.energy = s.mass * s.velocity * s.velocity;
+  k.time = 1.0 / omega;
+  k.length = v0 / omega;
+  k.velocity = v0;
+  k.force = m * v0 * omega;
+  k.energy = m * v0 * v0;
   return k;
+}
+
+BodyVelocities body_velocities_after(const Scene& s, double w) {
+  if (!s.target_mass) return {w, 0.0};
+  const double m1 = s.mass, m2 = *s.target_mass;
+  const double centre = m1 * s.velocity / (m1 + m2);  // unchanged by the contact
+  return {centre + m2 / (m1 + m2) * w, centre - m1 / (m1 + m2) * w};
 }
 
 Scene paper_scene() {
@@ -133,6 +182,37 @@ double required_number(const toml::table& t, const std::string& section, const s
   return *v;
 }
 
+void parse_target(const toml::table& tgt, Scene& s) {
+  reject_unknown_keys(
+      tgt, "target",
+      {"youngs_modulus", "poisson_ratio", "yield_strength", "shear_strength", "radius", "mass"});
+  // TOML's inf is a float like any other: +inf means a rigid target (validate() rejects -inf, nan)
+  s.target_youngs_modulus = required_number(tgt, "target", "youngs_modulus");
+  // a rigid target's Poisson's ratio plays no part (its compliance is zero): optional then
+  const auto nu2 = number(tgt, "target", "poisson_ratio");
+  if (!nu2 && !s.rigid_target()) {
+    throw InputError("target.poisson_ratio", "missing (required unless youngs_modulus = inf)");
+  }
+  s.target_poisson_ratio = nu2.value_or(0.0);
+  const auto yield = number(tgt, "target", "yield_strength");
+  const auto shear = number(tgt, "target", "shear_strength");
+  if (yield && shear) {
+    throw InputError("target.shear_strength",
+                     "give either yield_strength (S_y) or shear_strength (S_u, laminates: "
+                     "S_y = 2 S_u), not both");
+  }
+  if (shear) {
+    if (!std::isfinite(*shear) || *shear <= 0.0) {
+      throw InputError("target.shear_strength", "must be a finite number > 0 Pa");
+    }
+    s.yield_strength = 2.0 * *shear;
+  } else {
+    s.yield_strength = yield;  // absent: only laws without yield (hertz, hunt-crossley) run
+  }
+  s.target_radius = number(tgt, "target", "radius");
+  s.target_mass = number(tgt, "target", "mass");
+}
+
 }  // namespace
 
 Scene parse_scene_toml(const std::string& text, const std::string& source_name) {
@@ -157,30 +237,7 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name) 
   s.impactor_youngs_modulus = required_number(imp, "impactor", "youngs_modulus");
   s.impactor_poisson_ratio = required_number(imp, "impactor", "poisson_ratio");
 
-  const toml::table& tgt = require_table(root, "target");
-  reject_unknown_keys(tgt, "target",
-                      {"youngs_modulus", "poisson_ratio", "yield_strength", "shear_strength"});
-  s.target_youngs_modulus = required_number(tgt, "target", "youngs_modulus");
-  s.target_poisson_ratio = required_number(tgt, "target", "poisson_ratio");
-  const auto yield = number(tgt, "target", "yield_strength");
-  const auto shear = number(tgt, "target", "shear_strength");
-  if (yield && shear) {
-    throw InputError("target.shear_strength",
-                     "give either yield_strength (S_y) or shear_strength (S_u, laminates: "
-                     "S_y = 2 S_u), not both");
-  }
-  if (!yield && !shear) {
-    throw InputError("target.yield_strength",
-                     "missing (required; a laminate may give shear_strength instead)");
-  }
-  if (shear) {
-    if (!std::isfinite(*shear) || *shear <= 0.0) {
-      throw InputError("target.shear_strength", "must be a finite number > 0 Pa");
-    }
-    s.yield_strength = 2.0 * *shear;
-  } else {
-    s.yield_strength = *yield;
-  }
+  parse_target(require_table(root, "target"), s);
 
   if (const toml::table* d = root["damping"].as_table()) {
     reject_unknown_keys(*d, "damping", {"zeta", "c"});
@@ -209,9 +266,32 @@ Scene load_scene_file(const std::filesystem::path& path) {
   return parse_scene_toml(buffer.str(), path.string());
 }
 
+std::vector<std::filesystem::path> data_directories() {
+  std::vector<std::filesystem::path> dirs;
+  if (const char* env = std::getenv("IVV_DATA_DIR"); env && *env) dirs.emplace_back(env);
+#ifdef IVV_SOURCE_DATA_DIR
+  dirs.emplace_back(IVV_SOURCE_DATA_DIR);
+#endif
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share" / "ivv");
+  return dirs;
+}
+
 Scene load_scene(const std::string& name_or_path) {
   if (name_or_path == "paper") return paper_scene();
-  return load_scene_file(name_or_path);
+  const bool bare_name = name_or_path.find('/') == std::string::npos &&
+                         !name_or_path.ends_with(".toml") && !name_or_path.empty();
+  if (!bare_name || std::filesystem::exists(name_or_path)) return load_scene_file(name_or_path);
+  std::string searched;
+  for (const auto& dir : data_directories()) {
+    const auto file = dir / "scenes" / (name_or_path + ".toml");
+    if (std::filesystem::is_regular_file(file)) return load_scene_file(file);
+    searched += (searched.empty() ? "" : ", ") + file.parent_path().string();
+  }
+  throw InputError("--scene", "no scene file '" + name_or_path + "' and no shipped scene '" +
+                                  name_or_path + ".toml' in " + searched +
+                                  " (set IVV_DATA_DIR to the directory holding scenes/)");
 }
 
 }  // namespace ivv

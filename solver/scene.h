@@ -1,24 +1,40 @@
 // Scene: the physical inputs of one impact, and the parameters derived from them.
 //
-// A sphere (mass m, radius R, E1, nu1) strikes a target half-space (E2, nu2, yield strength S_y)
-// at velocity v0, optionally through a series dashpot c (paper eqs 1-4). SI units throughout.
+// A sphere (mass m1, radius R1, E1, nu1) strikes a target at relative approach velocity v0,
+// optionally through a series dashpot c (paper eqs 1-4). SI units throughout. The target is
+//   - a half-space (the paper's case; no target radius or mass), or
+//   - a free sphere (target radius R2 and mass m2, both given): a two-body central impact,
+//     reduced to one body of effective radius R* and effective mass m* (Johnson, Contact
+//     Mechanics, 1985, §4.2 and §11.1) with v0 the relative approach speed;
+// and it is rigid when its Young's modulus is +inf (then E* = E1/(1 - nu1^2)). The target's
+// yield strength S_y is optional: only laws that model yield need it (elastoplastic,
+// linearized); Hertz and Hunt-Crossley do not.
 //
 // Derived parameters (paper eqs 6, 7, 11, 12, 23; SPEC §1):
-//   1/E*  = (1 - nu1^2)/E1 + (1 - nu2^2)/E2            [Pa]
-//   K_h   = (4/3) sqrt(R) E*                             [N/m^1.5]  Hertz stiffness
-//   z_y   = 0.68 S_y^2 pi^2 R / E*^2                     [m]        yield deformation
+//   R*    = R1 R2/(R1 + R2)  (R1 for a half-space)      [m]        effective radius
+//   m*    = m1 m2/(m1 + m2)  (m1 for a fixed target)    [kg]       effective mass
+//   1/E*  = (1 - nu1^2)/E1 + (1 - nu2^2)/E2            [Pa]       (second term 0 if E2 = inf)
+//   K_h   = (4/3) sqrt(R*) E*                            [N/m^1.5]  Hertz stiffness
+//   z_y   = 0.68 S_y^2 pi^2 R* / E*^2                    [m]        yield deformation
 //   K_y   = 1.5 K_h sqrt(z_y)                            [N/m]      slope of Hertz at z_y
-//   omega0 = sqrt(K_y/m)                                 [rad/s]
-//   zeta  = sqrt(m K_y) / (2 c)                          [-]        (c = inf <=> zeta = 0)
-//   v_y   = sqrt(4 K_h z_y^{5/2} / (5 m))                [m/s]      undamped yield velocity
+//   omega0 = sqrt(K_y/m*)                                [rad/s]
+//   zeta  = sqrt(m* K_y) / (2 c)                         [-]        (c = inf <=> zeta = 0)
+//   v_y   = sqrt(4 K_h z_y^{5/2} / (5 m*))               [m/s]      undamped yield velocity
+// z_y, K_y, omega0, v_y and zeta exist only when S_y is given (NaN otherwise; has_yield()).
 //
-// The normalisation of paper eq. 26 (tau = omega0 t, alpha_bar = alpha omega0/v0,
-// F_bar = F/(m v0 omega0)) is described by `Scales`.
+// Normalisation (`Scales`), chosen by the contact law (ScaleBasis):
+//   yield: paper eq. 26, tau = omega0 t, alpha_bar = alpha omega0/v0, F_bar = F/(m* v0 omega0);
+//   hertz: the law's own scales for a law without yield, z_mH = (5 m* v0^2/(4 K_h))^{2/5} (the
+//          Hertz maximum compression) as length and omega = v0/z_mH: tau = omega t,
+//          alpha_bar = alpha/z_mH, F_bar = F/(m* v0 omega). A Hertz contact lasts tau = 2.943.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace ivv {
 
@@ -36,38 +52,60 @@ struct Damping {
 struct Scene {
   std::string name = "custom";
   // impactor
-  double mass = 0.0;                     // m [kg]
-  double radius = 0.0;                   // R [m]
+  double mass = 0.0;                     // m1 [kg]
+  double radius = 0.0;                   // R1 [m]
   double impactor_youngs_modulus = 0.0;  // E1 [Pa]
   double impactor_poisson_ratio = 0.0;   // nu1 [-]
   // target
-  double target_youngs_modulus = 0.0;  // E2 [Pa] (E22 for a laminate)
-  double target_poisson_ratio = 0.0;   // nu2 [-]
-  double yield_strength = 0.0;         // S_y [Pa] (laminate: 2 x shear strength)
+  double target_youngs_modulus = 0.0;    // E2 [Pa] (E22 for a laminate); +inf: rigid target
+  double target_poisson_ratio = 0.0;     // nu2 [-] (unused for a rigid target)
+  std::optional<double> yield_strength;  // S_y [Pa] (laminate: 2 x shear strength); absent:
+                                         // only laws without yield can run
+  std::optional<double> target_radius;   // R2 [m]: the target is a free sphere (with mass)
+  std::optional<double> target_mass;     // m2 [kg]: absent = half-space of infinite mass
   // dashpot and impact
   Damping damping;
-  double velocity = 0.0;  // v0 [m/s], towards the target
+  double velocity = 0.0;  // v0 [m/s], relative approach speed (towards the target)
+
+  bool rigid_target() const {
+    return target_youngs_modulus == std::numeric_limits<double>::infinity();
+  }
+  bool free_target() const { return target_mass.has_value(); }
 };
 
+// The yield-related members (z_y, K_y, omega0, v_yield, and zeta when the dashpot is given as
+// a coefficient) exist only when the scene gives a yield strength; otherwise they are NaN and
+// has_yield() is false. Every dynamical use of R and m goes through effective_radius and
+// effective_mass.
 struct DerivedParameters {
+  static constexpr double absent = std::numeric_limits<double>::quiet_NaN();
+  double effective_radius = 0.0;                       // R* [m]
+  double effective_mass = 0.0;                         // m* [kg]
   double E_star = 0.0;                                 // effective modulus E* [Pa]
   double K_h = 0.0;                                    // Hertz stiffness [N/m^1.5]
-  double z_y = 0.0;                                    // yield deformation [m]
-  double K_y = 0.0;                                    // elastic-plastic loading stiffness [N/m]
-  double omega0 = 0.0;                                 // sqrt(K_y/m) [rad/s]
+  double z_y = absent;                                 // yield deformation [m]
+  double K_y = absent;                                 // elastic-plastic loading stiffness [N/m]
+  double omega0 = absent;                              // sqrt(K_y/m*) [rad/s]
   double zeta = 0.0;                                   // damping ratio [-]; 0 without a dashpot
   double c = std::numeric_limits<double>::infinity();  // dashpot [N s/m]; inf without one
-  double v_yield = 0.0;                                // undamped yield velocity [m/s]
+  double v_yield = absent;                             // undamped yield velocity [m/s]
   bool has_dashpot() const { return c < std::numeric_limits<double>::infinity(); }
+  bool has_yield() const { return std::isfinite(z_y); }
 };
 
-// Scales of paper eq. 26 for one impact velocity.
+// Which scales normalise a run (see the header comment): a law states its own.
+enum class ScaleBasis {
+  yield,  // omega0 = sqrt(K_y/m*), length v0/omega0 (paper eq. 26); needs a yield strength
+  hertz   // omega = v0/z_mH, length z_mH, the Hertz maximum compression
+};
+
+// Scales for one impact velocity: tau = t/time, alpha_bar = alpha/length, F_bar = F/force.
 struct Scales {
-  double time = 0.0;      // 1/omega0 [s]
-  double length = 0.0;    // v0/omega0 [m]
+  double time = 0.0;      // 1/omega [s]
+  double length = 0.0;    // v0/omega [m]
   double velocity = 0.0;  // v0 [m/s]
-  double force = 0.0;     // m v0 omega0 [N]
-  double energy = 0.0;    // m v0^2 [J]
+  double force = 0.0;     // m* v0 omega [N]
+  double energy = 0.0;    // m* v0^2 [J]
 };
 
 // Throws InputError naming the first invalid field and its accepted range.
@@ -76,7 +114,19 @@ void validate(const Scene& scene);
 // Derived parameters of a valid scene (validate() first; this assumes validity).
 DerivedParameters derive(const Scene& scene);
 
-Scales scales(const Scene& scene, const DerivedParameters& p);
+// Throws InputError("target.yield_strength", ...) for ScaleBasis::yield without a yield strength.
+Scales scales(const Scene& scene, const DerivedParameters& p, ScaleBasis basis);
+
+// Velocities of the two bodies after an impact whose relative velocity ends at
+// `relative_velocity_after` [m/s] (alpha_dot at the end; < 0: separating), in the frame where
+// the target was at rest before; positive towards the target. Centre-of-mass velocity
+// V = m* v0/m2 is unchanged by the contact: v1 = V + (m*/m1) w, v2 = V - (m*/m2) w, so
+// m1 v1 + m2 v2 = m1 v0. A fixed target (no mass) stays at rest and v1 = w.
+struct BodyVelocities {
+  double impactor = 0.0;  // [m/s]
+  double target = 0.0;    // [m/s]
+};
+BodyVelocities body_velocities_after(const Scene& scene, double relative_velocity_after);
 
 // The paper's Table 1: 0.5 kg steel hemisphere (R = 10 mm, E = 207 GPa, nu = 0.3) on a
 // T300/934 laminate (E22 = 7.9 GPa, nu = 0.3, S_u = 101 MPa so S_y = 202 MPa), no dashpot,
@@ -88,7 +138,13 @@ Scene paper_scene();
 Scene load_scene_file(const std::filesystem::path& path);
 Scene parse_scene_toml(const std::string& text, const std::string& source_name);
 
-// "paper" names the built-in scene; anything else is a file path.
+// Directories searched for shipped data (each holding scenes/NAME.toml), in order:
+// $IVV_DATA_DIR, the source tree's reference_data/ (compiled in), <exe>/../share/ivv.
+std::vector<std::filesystem::path> data_directories();
+
+// "paper" names the built-in scene; an existing file path is read; otherwise a bare name
+// (no '/' and no ".toml") is looked up as scenes/NAME.toml in data_directories(), e.g.
+// "chung-ooi-2-aluminium".
 Scene load_scene(const std::string& name_or_path);
 
 }  // namespace ivv

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "solver/input_error.h"
+#include "solver/simulate.h"
 
 namespace ivv {
 namespace {
@@ -51,8 +52,36 @@ TEST(Scales, NormalisedForceOfLinearSpringIsDisplacement) {
   // With K_y z = F and z = z_bar * L, F_bar = K_y L / (m v0 omega0) = 1 * z_bar.
   const Scene s = paper_scene();
   const DerivedParameters p = derive(s);
-  const Scales k = scales(s, p);
+  const Scales k = scales(s, p, ScaleBasis::yield);
   EXPECT_NEAR(p.K_y * k.length / k.force, 1.0, 1e-14);
+  EXPECT_NEAR(k.time * p.omega0, 1.0, 1e-15);
+}
+
+// The Hertz scales: the length is the Hertz maximum compression z_mH, where the Hertz energy
+// (2/5) K_h z^{5/2} equals the kinetic energy (1/2) m v0^2, and the normalised force there
+// is K_h z_mH^{3/2}/(m v0 omega) = (5/4) (m v0^2 / z_mH)/(m v0^2 / z_mH) = 5/4.
+TEST(Scales, HertzScalesAreTheHertzMaximumCompression) {
+  const Scene s = paper_scene();
+  const DerivedParameters p = derive(s);
+  const Scales k = scales(s, p, ScaleBasis::hertz);
+  EXPECT_NEAR(0.4 * p.K_h * std::pow(k.length, 2.5) / (0.5 * k.energy), 1.0, 1e-14);
+  EXPECT_NEAR(p.K_h * std::pow(k.length, 1.5) / k.force, 1.25, 1e-14);
+  EXPECT_NEAR(k.length / k.time, s.velocity, 1e-14 * s.velocity);
+}
+
+TEST(Scales, YieldScalesWithoutYieldStrengthAreInputError) {
+  Scene s = paper_scene();
+  s.yield_strength.reset();
+  const DerivedParameters p = derive(s);
+  EXPECT_FALSE(p.has_yield());
+  EXPECT_TRUE(std::isnan(p.K_y));
+  try {
+    scales(s, p, ScaleBasis::yield);
+    FAIL() << "yield scales without a yield strength";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "target.yield_strength");
+  }
+  EXPECT_GT(scales(s, p, ScaleBasis::hertz).length, 0.0);
 }
 
 constexpr const char* kGoodScene = R"(
@@ -76,6 +105,8 @@ TEST(SceneParser, ReadsGoodFile) {
   const Scene s = parse_scene_toml(kGoodScene, "good.toml");
   EXPECT_EQ(s.name, "steel-on-laminate");
   EXPECT_EQ(s.yield_strength, 202e6);  // S_y = 2 S_u
+  EXPECT_FALSE(s.rigid_target());
+  EXPECT_FALSE(s.free_target());
   EXPECT_EQ(s.damping.kind, Damping::Kind::ratio);
   EXPECT_EQ(s.velocity, 1.0);  // integer in TOML accepted as a number
 }
@@ -124,7 +155,36 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"string_mass", replace(kGoodScene, "mass = 0.5", "mass = \"heavy\""),
                  "impactor.mass"},
         BadScene{"zero_zeta", replace(kGoodScene, "zeta = 0.1", "zeta = 0"), "damping.zeta"},
-        BadScene{"syntax", replace(kGoodScene, "[impact]", "[impact"), "bad.toml"}),
+        BadScene{"syntax", replace(kGoodScene, "[impact]", "[impact"), "bad.toml"},
+        BadScene{"minus_inf_target_modulus",
+                 replace(kGoodScene, "youngs_modulus = 7.9e9", "youngs_modulus = -inf"),
+                 "target.youngs_modulus"},
+        BadScene{"nan_target_modulus",
+                 replace(kGoodScene, "youngs_modulus = 7.9e9", "youngs_modulus = nan"),
+                 "target.youngs_modulus"},
+        BadScene{"inf_impactor_modulus",
+                 replace(kGoodScene, "youngs_modulus = 207e9", "youngs_modulus = inf"),
+                 "impactor.youngs_modulus"},
+        BadScene{"zeta_without_yield", replace(kGoodScene, "shear_strength = 101e6", ""),
+                 "damping.zeta"},
+        BadScene{
+            "target_radius_without_mass",
+            replace(kGoodScene, "shear_strength = 101e6", "shear_strength = 101e6\nradius = 0.01"),
+            "target.mass"},
+        BadScene{"target_mass_without_radius",
+                 replace(kGoodScene, "shear_strength = 101e6", "shear_strength = 101e6\nmass = 1"),
+                 "target.radius"},
+        BadScene{"negative_target_radius",
+                 replace(kGoodScene, "shear_strength = 101e6",
+                         "shear_strength = 101e6\nradius = -0.01\nmass = 1"),
+                 "target.radius"},
+        BadScene{"inf_target_mass",
+                 replace(kGoodScene, "shear_strength = 101e6",
+                         "shear_strength = 101e6\nradius = 0.01\nmass = inf"),
+                 "target.mass"},
+        BadScene{"missing_target_poisson",
+                 replace(kGoodScene, "poisson_ratio = 0.3\nshear", "shear"),
+                 "target.poisson_ratio"}),
     [](const auto& info) { return std::string(info.param.label); });
 
 TEST(SceneParser, MissingFileIsInputError) {
@@ -133,6 +193,105 @@ TEST(SceneParser, MissingFileIsInputError) {
 
 TEST(SceneParser, PaperIsBuiltIn) {
   EXPECT_EQ(load_scene("paper").name, "paper");
+}
+
+// Shipped scenes are found by name through data_directories() (the source tree here).
+TEST(SceneParser, ShippedSceneByName) {
+  const Scene s = load_scene("chung-ooi-2-aluminium");
+  EXPECT_EQ(s.name, "chung-ooi-2-aluminium");
+  EXPECT_TRUE(s.rigid_target());
+  try {
+    load_scene("no-such-shipped-scene");
+    FAIL() << "found a scene that does not exist";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "--scene");
+  }
+}
+
+constexpr const char* kElasticSphere = R"(
+[impactor]
+mass = 2.0
+radius = 0.1
+youngs_modulus = 70e9
+poisson_ratio = 0.33
+[target]
+youngs_modulus = inf
+[impact]
+velocity = 0.2
+)";
+
+// A rigid target adds no compliance: E* = E1/(1 - nu1^2), whatever nu2 says (optional then).
+TEST(RigidTarget, InfModulusGivesImpactorPlaneStrainModulus) {
+  const Scene s = parse_scene_toml(kElasticSphere, "rigid.toml");
+  EXPECT_TRUE(s.rigid_target());
+  EXPECT_FALSE(s.yield_strength.has_value());
+  const DerivedParameters p = derive(s);
+  EXPECT_EQ(p.E_star, 70e9 / (1.0 - 0.33 * 0.33));
+  EXPECT_NEAR(p.K_h / (4.0 / 3.0 * std::sqrt(0.1) * p.E_star), 1.0, 1e-15);
+  EXPECT_FALSE(p.has_yield());
+  EXPECT_TRUE(std::isnan(p.omega0));
+  EXPECT_TRUE(std::isnan(p.v_yield));
+}
+
+// R* = R1 R2/(R1 + R2), m* = m1 m2/(m1 + m2); K_h and the yield quantities use them.
+TEST(TwoSpheres, EffectiveRadiusAndMass) {
+  const Scene s = parse_scene_toml(replace(kElasticSphere, "youngs_modulus = inf",
+                                           "youngs_modulus = 48e9\npoisson_ratio = 0.2\n"
+                                           "radius = 0.3\nmass = 6.0\nyield_strength = 1e8"),
+                                   "two.toml");
+  ASSERT_TRUE(s.free_target());
+  const DerivedParameters p = derive(s);
+  EXPECT_NEAR(p.effective_radius, 0.1 * 0.3 / 0.4, 1e-17);
+  EXPECT_NEAR(p.effective_mass, 2.0 * 6.0 / 8.0, 1e-15);
+  EXPECT_NEAR(p.K_h / (4.0 / 3.0 * std::sqrt(0.075) * p.E_star), 1.0, 1e-15);
+  const double z_y =
+      0.68 * 1e16 * std::numbers::pi * std::numbers::pi * 0.075 / (p.E_star * p.E_star);
+  EXPECT_NEAR(p.z_y / z_y, 1.0, 1e-14);
+  EXPECT_NEAR(p.omega0 / std::sqrt(p.K_y / 1.5), 1.0, 1e-15);
+}
+
+// Equal masses and e = 1 exchange velocities; e = 0 leaves both at the centre-of-mass velocity.
+TEST(TwoSpheres, BodyVelocitiesLimits) {
+  Scene s = parse_scene_toml(kElasticSphere, "rigid.toml");
+  s.target_radius = 0.1;
+  s.target_mass = 2.0;
+  const BodyVelocities elastic = body_velocities_after(s, -s.velocity);
+  EXPECT_NEAR(elastic.impactor, 0.0, 1e-17);
+  EXPECT_NEAR(elastic.target, s.velocity, 1e-17);
+  const BodyVelocities plastic = body_velocities_after(s, 0.0);
+  EXPECT_EQ(plastic.impactor, plastic.target);
+  s.target_mass.reset();
+  s.target_radius.reset();
+  const BodyVelocities fixed = body_velocities_after(s, -0.7 * s.velocity);
+  EXPECT_EQ(fixed.target, 0.0);
+  EXPECT_EQ(fixed.impactor, -0.7 * s.velocity);
+}
+
+// A damped impact of unequal spheres: momentum m1 v0 = m1 v1 + m2 v2 to rounding (the split
+// conserves it by construction), and the target's momentum m2 v2 equals the integrated impulse
+// to the integrator's tolerance (an independent check: the impulse is a quadrature riding
+// along, v2 comes from the final relative velocity).
+TEST(TwoSpheres, MomentumConservedAndImpulseMatches) {
+  SimulationRequest req;
+  req.scene = parse_scene_toml(replace(kElasticSphere, "youngs_modulus = inf",
+                                       "youngs_modulus = 48e9\npoisson_ratio = 0.2\n"
+                                       "radius = 0.05\nmass = 0.7\nyield_strength = 1e8"),
+                               "two.toml");
+  req.scene.damping = Damping::coefficient(2e5);
+  req.law = LawKind::elastoplastic;
+  const ImpactResult r = simulate(req);
+  ASSERT_TRUE(r.separated()) << r.reason;
+  const double m1 = req.scene.mass, m2 = *req.scene.target_mass, v0 = req.scene.velocity;
+  EXPECT_GT(r.e, 0.05);
+  EXPECT_LT(r.e, 0.95);
+  const double before = m1 * v0;
+  const double after = m1 * r.impactor_velocity_after + m2 * r.target_velocity_after;
+  EXPECT_NEAR(after, before, 4 * std::numeric_limits<double>::epsilon() * before);
+  EXPECT_NEAR(r.impactor_velocity_after - r.target_velocity_after, r.rebound_velocity,
+              4 * std::numeric_limits<double>::epsilon() * v0);
+  // default rtol 1e-10 per step; the impulse and w_f each carry a few of that
+  EXPECT_NEAR(m2 * r.target_velocity_after / r.impulse, 1.0, 1e-8);
+  EXPECT_NEAR(r.impulse, derive(req.scene).effective_mass * v0 * (1 + r.e), 1e-8 * r.impulse);
 }
 
 }  // namespace

@@ -138,6 +138,13 @@ void validate(const SimulationRequest& req) {
   validate(req.options);
   validate_parameters(req.law, req.parameters);
   const LawInfo& law = law_info(req.law);
+  if (law.needs_yield_strength && !req.scene.yield_strength) {
+    throw InputError("target.yield_strength",
+                     "required by the " + std::string(law.name) +
+                         " law (its yield deformation z_y = 0.68 S_y^2 pi^2 R*/E*^2); give "
+                         "yield_strength or shear_strength in [target], a finite number > 0 "
+                         "Pa, or use a law without yield (hertz, hunt-crossley)");
+  }
   if (req.law != LawKind::expression && !req.expression.force.empty())
     throw InputError("--force", "an expression law replaces --law " + std::string(law.name) +
                                     "; give one or the other");

@@ -16,12 +16,13 @@ namespace ivv::detail {
 
 template <class System>
 ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, const Scene& scene,
-                         const DerivedParameters& p) {
+                         const Scales& k) {
   // the 50-digit reference reports in double, like everything else
   auto d = [](const auto& v) { return static_cast<double>(v); };
   const double L = sys.length, V = scene.velocity, Fs = sys.force_scale;
-  const double Ts = 1.0 / p.omega0;
-  const double E = scene.mass * V * V;
+  const double Ts = k.time;
+  const double E = k.energy;             // m* v0^2
+  const double momentum = k.energy / V;  // m* v0
   ImpactResult r;
   r.status = run.status;
   r.failure = run.failure;
@@ -35,6 +36,9 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   const auto& x = run.x_end;
   r.t_contact = d(run.tau_end) * Ts;
   r.rebound_velocity = d(x[System::W]) * V;
+  const BodyVelocities bodies = body_velocities_after(scene, r.rebound_velocity);
+  r.impactor_velocity_after = bodies.impactor;
+  r.target_velocity_after = bodies.target;
   r.z_max = d(run.branch.z_max);
   r.t_z_max = d(run.tau_z_max) * Ts;
   r.F_max = d(run.F_max) * Fs;
@@ -48,7 +52,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
     r.alpha_max = d(x[System::A]) * L;
     r.t_alpha_max = r.t_contact;
   }
-  r.impulse = d(x[System::J]) * scene.mass * V;
+  r.impulse = d(x[System::J]) * momentum;
   if (run.status == ImpactStatus::failed) return r;
 
   const double w_f = d(x[System::W]);
@@ -57,7 +61,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
     // differences taken in T before rounding
     const auto J_c = run.x_alpha_max[System::J];
     const auto Wa_c = run.x_alpha_max[System::WA];
-    r.impulse_compression = d(J_c) * scene.mass * V;
+    r.impulse_compression = d(J_c) * momentum;
     r.e_poisson = d((x[System::J] - J_c) / J_c);
     r.e_energetic = std::sqrt(std::max(0.0, d((Wa_c - x[System::WA]) / Wa_c)));
   }
@@ -76,17 +80,30 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   return r;
 }
 
+// The scales a law normalises with: its own Law::scale_basis; a law that states none uses the
+// yield scales when the scene has a yield strength and the Hertz scales otherwise.
+template <class Law>
+ScaleBasis scale_basis_for(const DerivedParameters& p) {
+  if constexpr (requires { Law::scale_basis; })
+    return Law::scale_basis;
+  else
+    return p.has_yield() ? ScaleBasis::yield : ScaleBasis::hertz;
+}
+
 template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
 ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptions& options,
                        const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
   using System = ImpactSystem<Law, Dashpot, T>;
-  const Scales k = scales(scene, p);
+  // The law's own scales, so that a tolerance means the same for every law and no law depends
+  // on a parameter it does not use (Hertz and Hunt-Crossley: no yield strength).
+  const Scales k = scales(scene, p, scale_basis_for<Law>(p));
   System sys;
   sys.law = law;
   sys.length = k.length;
   sys.velocity = k.velocity;
   sys.force_scale = k.force;
-  sys.two_zeta = Dashpot ? 2.0 * p.zeta : 0.0;
+  // m* omega/c for the chosen omega (= 2 zeta when omega = omega0)
+  sys.two_zeta = Dashpot ? p.effective_mass / (k.time * p.c) : 0.0;
   SampleObserver<System> observer;
   if (trajectory) {
     observer = [trajectory, k](double tau, const typename System::state_type& x, const System& s) {
@@ -107,7 +124,7 @@ ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptio
     };
   }
   const auto run = run_impact<Stepper<System>>(sys, options, trajectory ? &observer : nullptr);
-  return to_physical(run, sys, scene, p);
+  return to_physical(run, sys, scene, k);
 }
 
 // One impact of `law` with stepper `Stepper` on scalar T: the dashpot (or its absence) chosen

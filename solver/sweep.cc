@@ -111,6 +111,11 @@ void validate(const SweepRequest& req) {
     if (!(std::isfinite(z) && z >= 0))
       throw InputError("--zeta",
                        "damping ratios must be finite and >= 0 (0: no dashpot), got " + exact(z));
+  for (double z : req.zetas)
+    if (z > 0 && !req.base.scene.yield_strength)
+      throw InputError("--zeta",
+                       "a damping ratio is defined with K_y and needs target.yield_strength; "
+                       "this scene has none: use --zeta 0 (no dashpot)");
   // Every point is a valid request: each v0 and each zeta once (they enter separately); a
   // rate-dependent law with a dashpot is refused there, naming --zeta.
   for (double v : req.velocities) validate(with_point(req.base, v, req.zetas.front()));

@@ -12,6 +12,7 @@ const Registry& all_cases() {
     register_stability_cases(reg);
     register_published_trend_cases(reg);
     register_example_cases(reg);
+    register_dem_cases(reg);
     return reg;
   }();
   return registry;

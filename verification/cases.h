@@ -1,6 +1,9 @@
 // Registration of the battery, one function per tier file.
 #pragma once
 
+#include <span>
+#include <string_view>
+
 #include "verification/registry.h"
 
 namespace ivv::verification {
@@ -12,5 +15,15 @@ void register_convergence_cases(Registry& reg);
 void register_stability_cases(Registry& reg);
 void register_published_trend_cases(Registry& reg);
 void register_example_cases(Registry& reg);
+void register_dem_cases(Registry& reg);
+
+// A published DEM benchmark scene shipped in reference_data/scenes/ (cases_dem.cc).
+struct DemBenchmarkScene {
+  std::string_view scene;  // name for load_scene(), e.g. "chung-ooi-1-glass"
+  std::string_view test;   // "Test 1"
+  std::string_view what;   // one line for people
+};
+// Chung & Ooi (2011) normal-impact Tests 1 and 2; case ids are "dem.<scene>.<integrator>".
+std::span<const DemBenchmarkScene> chung_ooi_scenes();
 
 }  // namespace ivv::verification

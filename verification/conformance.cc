@@ -41,7 +41,7 @@ Scales hertz_scales(const Scene& s, double v) {
   const DerivedParameters p = derive(s);
   Scales k;
   k.v = v;
-  k.z = std::pow(5.0 * s.mass * v * v / (4.0 * p.K_h), 0.4);
+  k.z = std::pow(5.0 * p.effective_mass * v * v / (4.0 * p.K_h), 0.4);
   k.F = p.K_h * k.z * std::sqrt(k.z);
   k.k = k.F / k.z;
   return k;

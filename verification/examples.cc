@@ -78,7 +78,8 @@ const ExampleRun& thornton_example() {
     // p_y = sqrt(4 x 0.68) S_y gives Thornton's z_y the paper's yield deformation (eq. 11)
     const auto make = [](const Scene& s) {
       const DerivedParameters p = derive(s);
-      return examples::ThorntonLaw{p.E_star, s.radius, std::sqrt(4 * 0.68) * s.yield_strength};
+      return examples::ThorntonLaw{p.E_star, p.effective_radius,
+                                   std::sqrt(4 * 0.68) * s.yield_strength.value()};
     };
     auto law = conformance::law_under_test<examples::ThorntonLaw>(
         "thornton",
@@ -88,7 +89,7 @@ const ExampleRun& thornton_example() {
     conformance::Claims claims;
     claims.elastic_at_low_speed = true;
     const Scene paper = paper_scene();
-    const double V_y = make(paper).yield_velocity(paper.mass);
+    const double V_y = make(paper).yield_velocity(derive(paper).effective_mass);
     claims.expected_cor = [V_y](double v0) { return oracles::thornton_cor(V_y / v0); };
     claims.expected_cor_text = "Thornton's e(V_y/v0), V_y = " + fmt(V_y) + " m/s";
     claims.cor_tolerance_reason =
@@ -105,7 +106,7 @@ const ExampleRun& kuwabara_kono_example() {
     const auto make = [](const Scene& s) {
       const DerivedParameters p = derive(s);
       // A from beta = (3/2) A (rho/m)^{2/5}
-      const double A = kKuwabaraKonoBeta / (1.5 * std::pow(p.K_h / s.mass, 0.4));
+      const double A = kKuwabaraKonoBeta / (1.5 * std::pow(p.K_h / p.effective_mass, 0.4));
       return examples::KuwabaraKonoLaw{p.K_h, A};
     };
     auto law = conformance::law_under_test<examples::KuwabaraKonoLaw>(

@@ -89,7 +89,8 @@ std::string key(const SimulationRequest& r) {
   os << std::setprecision(17) << r.scene.mass << ' ' << r.scene.radius << ' '
      << r.scene.impactor_youngs_modulus << ' ' << r.scene.impactor_poisson_ratio << ' '
      << r.scene.target_youngs_modulus << ' ' << r.scene.target_poisson_ratio << ' '
-     << r.scene.yield_strength << ' ' << static_cast<int>(r.scene.damping.kind) << ' '
+     << r.scene.yield_strength.value_or(-1) << ' ' << r.scene.target_radius.value_or(-1) << ' '
+     << r.scene.target_mass.value_or(-1) << ' ' << static_cast<int>(r.scene.damping.kind) << ' '
      << r.scene.damping.value << ' ' << r.scene.velocity << ' ' << static_cast<int>(r.law) << ' '
      << parameters_key(r.parameters) << ' ' << r.expression.force << ' ' << r.expression.unload
      << ' ' << r.expression.allow_tension;

@@ -24,6 +24,7 @@ namespace ivv {
 struct ElastoplasticLaw {
   static constexpr std::string_view name = "elastoplastic";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
   static constexpr bool needs_yield_strength = true;
   static constexpr std::string_view summary =
       "Hertz to z_y, then linear K_y; Hertz-shaped unloading (paper eqs 8-10)";

@@ -66,12 +66,12 @@ bool setup_parser(mu::Parser& parser, const std::string& text, const std::string
 // checked against the reserved names.
 Constants scene_constants(const Scene& scene, const DerivedParameters& p,
                           const LawParameters& parameters, const std::set<std::string>& reserved) {
-  Constants constants = {{"m", scene.mass},
-                         {"R", scene.radius},
+  Constants constants = {{"m", p.effective_mass},
+                         {"R", p.effective_radius},
                          {"E_star", p.E_star},
                          {"K_h", p.K_h},
                          {"v0", scene.velocity}};
-  if (std::isfinite(p.z_y) && p.z_y > 0) {
+  if (p.has_yield()) {
     constants.push_back({"z_y", p.z_y});
     constants.push_back({"K_y", p.K_y});
   }
@@ -122,7 +122,7 @@ CompiledExpressions::CompiledExpressions(const ExpressionLawSpec& spec,
   const Constants constants = scene_constants(scene, p, parameters, {"z", "zdot", "zmax"});
   // Hertz scales of the scene: z_ref = (5 m v0^2 / (4 K_h))^{2/5}, F_ref = K_h z_ref^{3/2}.
   v_ref_ = scene.velocity;
-  z_ref_ = std::pow(5.0 * scene.mass * v_ref_ * v_ref_ / (4.0 * p.K_h), 0.4);
+  z_ref_ = std::pow(5.0 * p.effective_mass * v_ref_ * v_ref_ / (4.0 * p.K_h), 0.4);
   k_ref_ = p.K_h * std::sqrt(z_ref_);
   P.known = known_names("z, zdot, zmax", constants);
   const std::vector<std::pair<std::string, double*>> variables = {

@@ -20,6 +20,8 @@ namespace ivv {
 struct HertzLaw {
   static constexpr std::string_view name = "hertz";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
+  static constexpr bool needs_yield_strength = false;
   static constexpr std::string_view summary =
       "F = K_h z^{3/2} (Hertz, elastic; paper eq. 5, Johnson 1985 §4.2)";
   static constexpr std::array<ParameterSpec, 0> parameters{};

@@ -22,6 +22,8 @@ namespace ivv {
 struct HuntCrossleyLaw {
   static constexpr std::string_view name = "hunt-crossley";
   static constexpr bool rate_dependent = true;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
+  static constexpr bool needs_yield_strength = false;
   static constexpr std::string_view summary =
       "F = K z^{3/2} (1 + mu dz/dt), no series dashpot (paper eq. 27; Hunt & Crossley 1975)";
   static constexpr std::array<ParameterSpec, 2> parameters{{

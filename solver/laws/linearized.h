@@ -25,6 +25,7 @@ namespace ivv {
 struct LinearizedLaw {
   static constexpr std::string_view name = "linearized";
   static constexpr bool rate_dependent = false;
+  static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
   static constexpr bool needs_yield_strength = true;
   static constexpr std::string_view summary =
       "F = K_y z, secant unloading to z_f (paper eqs 15-18; undefined below z_m = 2.25 z_y)";
