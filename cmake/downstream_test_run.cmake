@@ -2,7 +2,7 @@
 #   1. build the three libraries (a no-op after `make`), 2. cmake --install them, their headers,
 #   config files and data into WORK_DIR/prefix (a fresh directory), 3. configure
 #   examples/downstream/ with only that prefix to find ivv by, 4. build it, 5. run its program
-#   on the paper scene and on a scene of the installed data (IVV_DATA_DIR unset), 6. run its
+#   on the paper scene and on a shipped scene by name (the installed data, IVV_DATA_DIR unset), 6. run its
 #   conformance tests.
 foreach(var IVV_SOURCE_DIR IVV_BINARY_DIR WORK_DIR GENERATOR CXX_COMPILER)
   if(NOT ${var})
@@ -46,7 +46,7 @@ if(NOT ivv_dir STREQUAL "ivv_DIR:PATH=${prefix}/lib/cmake/ivv")
 endif()
 step("build examples/downstream" ${CMAKE_COMMAND} --build ${build} -j 2)
 step("run restitution" ${build}/restitution)
-step("run restitution on an installed scene"
-     ${build}/restitution ${prefix}/share/ivv/scenes/steel-on-aluminium.toml)
+# A shipped scene by name: found in the installation's share/ivv (IVV_PACKAGE_DATA_DIR).
+step("run restitution on an installed scene" ${build}/restitution steel-on-aluminium)
 step("run the conformance suite" ${CMAKE_CTEST_COMMAND} --test-dir ${build} -j 2
      --output-on-failure)
