@@ -67,7 +67,47 @@ TEST(Cli, SummaryIsReadable) {
 TEST(Cli, IntegratorsListsOnePerLine) {
   const CliRun r = ivv("integrators");
   ASSERT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out, "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
+  EXPECT_EQ(r.out,
+            "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ndop853\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
+}
+
+TEST(Cli, IntegratorsVerboseShowsTheTraits) {
+  const CliRun r = ivv("integrators -v");
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("dop853\torder 8, explicit, dense output, adaptive"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("mp50\torder 8, explicit, Hermite interpolant, adaptive, reference"),
+            std::string::npos);
+}
+
+TEST(Cli, AutoIntegratorSaysWhatItChoseAndWhy) {
+  const CliRun r = ivv("simulate --scene paper --v0 1 --zeta 100 --integrator auto --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model_choice"]["integrator"], "odeint-rosenbrock4");
+  EXPECT_EQ(j["model_choice"]["law"], "elastoplastic");
+  EXPECT_GE(j["model_choice"]["reasons"].size(), 2u);
+  EXPECT_GT(j["model_choice"]["estimated_error"].get<double>(), 0.0);
+}
+
+TEST(Cli, BenchRejectsUnknownFlags) {
+  const CliRun r = ivv("bench --fast");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--fast"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BenchQuickJsonHasPointsPeersAndTargets) {
+  const CliRun r = ivv("bench --quick --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"machine", "points", "peers", "targets"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  ASSERT_FALSE(j["points"].empty());
+  for (const char* key : {"integrator", "law", "scene", "rtol", "err_e", "err_F", "err_t",
+                          "us_per_impact", "rhs_evals"})
+    EXPECT_TRUE(j["points"][0].contains(key)) << key;
+  EXPECT_EQ(j["peers"].size() % 2, 0u);  // two peers, same tolerances
+  for (const auto& t : j["targets"]) EXPECT_TRUE(t.contains("status"));
 }
 
 // A rigid target without a yield strength and the Hertz law: the Hertz closed form (SPEC §2)

@@ -22,11 +22,13 @@
 #include "app/result_json.h"
 #include "app/sweep_sidecar.h"
 #include "bench/benchmarks.h"
+#include "bench/speed_bench.h"
 #include "reports/law_report.h"
 #include "reports/report.h"
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
+#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/conformance.h"
@@ -85,7 +87,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
       ->needs(force);
   cmd.add_option("--param", f.params,
                  "law parameter NAME=VALUE (repeatable; `ivv laws -v` lists each law's)");
-  cmd.add_option("--integrator", f.integrator, "integrator (see `ivv integrators`)")
+  cmd.add_option("--integrator", f.integrator,
+                 "integrator (see `ivv integrators`), or auto: chosen by stiffness")
       ->capture_default_str();
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
@@ -124,7 +127,8 @@ SimulationRequest build_request(const ModelFlags& f) {
   } else {
     req.law = parse_law(f.law);
   }
-  req.integrator = parse_integrator(f.integrator);
+  // auto: chosen below, once the scene, law and tolerances are known
+  req.integrator = f.integrator == "auto" ? IntegratorKind::dop853 : parse_integrator(f.integrator);
   req.parameters = parse_parameters(f.params);
   if (f.hc_k || f.hc_mu) {
     const char* flag = f.hc_k ? "--hc-k" : "--hc-mu";
@@ -145,6 +149,7 @@ SimulationRequest build_request(const ModelFlags& f) {
   }
   req.options.max_steps = f.max_steps;
   validate(req);
+  if (f.integrator == "auto") req.integrator = choose_integrator(req).integrator;
   return req;
 }
 
@@ -201,7 +206,15 @@ int run_simulate(const ModelFlags& f, bool json, const std::string& trajectory_p
     });
   }
   if (json) {
-    std::cout << simulation_json(req, r).dump(2) << std::endl;
+    nlohmann::json j = simulation_json(req, r);
+    if (f.integrator == "auto") {
+      const IntegratorChoice c = choose_integrator(req);
+      j["model_choice"] = {{"law", std::string(to_string(req.law))},
+                           {"integrator", std::string(to_string(c.integrator))},
+                           {"reasons", c.reasons},
+                           {"estimated_error", c.estimated_error}};
+    }
+    std::cout << j.dump(2) << std::endl;
   } else {
     print_summary(std::cout, req, r);
   }
@@ -642,8 +655,10 @@ int main(int argc, char** argv) {
   check_law->add_flag("--json", check.json, "print the verdict and every check as JSON");
   check_law->add_option("--report", check.report_dir, "write DIR/index.html for this law");
 
-  auto* bench = app.add_subcommand(
-      "bench", "Google Benchmark timings of one impact per integrator (flags: --benchmark_*)");
+  auto* bench =
+      app.add_subcommand("bench",
+                         "speed against error, peers and targets: ivv bench [--json] [--quick]; "
+                         "Google Benchmark timings: ivv bench --gbench [--benchmark_*]");
   bench->allow_extras();
   bench->prefix_command();
 
@@ -667,9 +682,13 @@ int main(int argc, char** argv) {
     }
     if (*show) return run_scene_show(show_scene, show_json);
     if (*integrators) {
-      for (IntegratorKind k : all_integrators()) {
-        std::cout << to_string(k);
-        if (verbose) std::cout << "\t" << describe(k);
+      for (const IntegratorTraits& t : integrator_table()) {
+        std::cout << t.name;
+        if (verbose)
+          std::cout << "\torder " << t.order << (t.implicit ? ", implicit" : ", explicit")
+                    << (t.dense_output ? ", dense output" : ", Hermite interpolant")
+                    << (t.fixed_step ? ", fixed step" : ", adaptive")
+                    << (t.reference ? ", reference" : "") << "\t" << t.description;
         std::cout << "\n";
       }
       return 0;
@@ -688,10 +707,28 @@ int main(int argc, char** argv) {
     if (*verify) return run_verify(verify_filter, verify_out, verify_threads, verify_list);
     if (*bench) {
       std::vector<std::string> extras = bench->remaining();
-      std::vector<char*> args{argv[0]};
-      for (auto& e : extras) args.push_back(e.data());
-      int n = static_cast<int>(args.size());
-      return bench::run_benchmarks(n, args.data());
+      bool gbench = false, bench_json = false, bench_quick = false;
+      for (const auto& e : extras) {
+        gbench = gbench || e == "--gbench" || e.rfind("--benchmark_", 0) == 0;
+        bench_json = bench_json || e == "--json";
+        bench_quick = bench_quick || e == "--quick";
+      }
+      if (gbench) {
+        std::vector<char*> args{argv[0]};
+        for (auto& e : extras)
+          if (e != "--gbench") args.push_back(e.data());
+        int n = static_cast<int>(args.size());
+        return bench::run_benchmarks(n, args.data());
+      }
+      for (const auto& e : extras)
+        if (e != "--json" && e != "--quick")
+          throw InputError(e,
+                           "unknown flag; ivv bench takes --json, --quick, or --gbench "
+                           "[--benchmark_*]");
+      const bench::BenchReport rep = bench::run_bench(
+          {bench_quick}, [](const std::string& line) { std::cerr << line << "\n"; });
+      std::cout << (bench_json ? bench::to_json(rep) + "\n" : bench::to_text(rep));
+      return 0;
     }
     if (*laws) {
       for (const LawInfo& l : all_law_info()) {

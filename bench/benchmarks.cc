@@ -14,12 +14,6 @@ constexpr double kPaperDashpot = 11440.0;  // [N s/m]
 constexpr double kPaperVelocity = 1.0;     // [m/s]
 constexpr double kStiffZeta = 1000.0;      // SPEC §6: the stiff end of the damping range
 
-constexpr IntegratorKind kDoublePrecision[] = {
-    IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
-    IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf};
-constexpr IntegratorKind kImplicit[] = {IntegratorKind::odeint_rosenbrock4,
-                                        IntegratorKind::gsl_msbdf};
-
 SimulationRequest paper_request(IntegratorKind kind, Damping damping) {
   SimulationRequest req;
   req.scene = paper_scene();
@@ -46,21 +40,22 @@ void one_impact(benchmark::State& state, const SimulationRequest& req) {
 }
 
 void register_all() {
-  for (IntegratorKind k : kDoublePrecision) {
+  for (IntegratorKind k : production_integrators()) {
     const SimulationRequest req = paper_request(k, Damping::coefficient(kPaperDashpot));
     benchmark::RegisterBenchmark(("paper/default/" + std::string(to_string(k))).c_str(), one_impact,
                                  req)
         ->Unit(benchmark::kMicrosecond);
   }
-  for (IntegratorKind k : kDoublePrecision) {
-    if (k == IntegratorKind::rk4) continue;  // fixed step: no tolerance to set
+  for (IntegratorKind k : production_integrators()) {
+    if (traits(k).fixed_step) continue;  // no tolerance to set
     SimulationRequest req = paper_request(k, Damping::coefficient(kPaperDashpot));
     req.options.rtol = req.options.atol = 1e-6;
     benchmark::RegisterBenchmark(("paper/rtol=1e-6/" + std::string(to_string(k))).c_str(),
                                  one_impact, req)
         ->Unit(benchmark::kMicrosecond);
   }
-  for (IntegratorKind k : kImplicit) {
+  for (IntegratorKind k : production_integrators()) {
+    if (!traits(k).implicit) continue;
     const SimulationRequest req = paper_request(k, Damping::ratio(kStiffZeta));
     benchmark::RegisterBenchmark(("stiff/" + std::string(to_string(k))).c_str(), one_impact, req)
         ->Unit(benchmark::kMicrosecond);

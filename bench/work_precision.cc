@@ -42,7 +42,7 @@ SimulationRequest point_request(const SimulationRequest& base, IntegratorKind ki
                                 double tolerance) {
   SimulationRequest req = base;
   req.integrator = kind;
-  if (kind == IntegratorKind::rk4) {
+  if (traits(kind).fixed_step) {
     req.options.dt = tolerance;
   } else {
     req.options.rtol = tolerance;
@@ -151,12 +151,12 @@ WorkPrecisionStudy measure_work_precision(const std::string& label, const Simula
 
   std::size_t total = 0;
   for (IntegratorKind k : options.integrators)
-    total += (k == IntegratorKind::rk4 ? options.rk4_steps : options.rtols).size();
+    total += (traits(k).fixed_step ? options.rk4_steps : options.rtols).size();
   std::size_t done = 0;
   for (IntegratorKind k : options.integrators) {
     WorkPrecisionSeries s;
     s.integrator = k;
-    for (double tol : k == IntegratorKind::rk4 ? options.rk4_steps : options.rtols) {
+    for (double tol : traits(k).fixed_step ? options.rk4_steps : options.rtols) {
       const SimulationRequest req = point_request(base, k, tol);
       validate(req);
       s.points.push_back(measure_point(req, tol, study.reference, options));
@@ -167,12 +167,56 @@ WorkPrecisionStudy measure_work_precision(const std::string& label, const Simula
   return study;
 }
 
+OrderStudy measure_order(const SimulationRequest& base, IntegratorKind kind,
+                         const std::vector<double>& settings, double error_floor) {
+  if (base.law != LawKind::linearized)
+    throw std::invalid_argument("measure_order: the closed form needs LawKind::linearized");
+  const oracles::LinearImpact exact =
+      oracles::solve_linear_model(oracles::linear_model_input(base.scene, derive(base.scene)));
+  if (exact.captured)
+    throw std::invalid_argument("measure_order: the closed form is a capture (no COR)");
+  if (!traits(kind).fixed_step_mode)
+    throw std::invalid_argument("measure_order: " + std::string(to_string(kind)) +
+                                " has no fixed-step mode");
+  OrderStudy study;
+  study.integrator = kind;
+  std::vector<double> x, y;
+  for (double setting : settings) {
+    SimulationRequest req = base;
+    req.integrator = kind;
+    req.options.dt = setting;
+    req.options.fixed_step = true;
+    const ImpactResult r = simulate(req);
+    if (!r.separated()) {
+      std::ostringstream os;
+      os << "measure_order: " << to_string(kind) << " at " << setting << " ended "
+         << to_string(r.status) << (r.reason.empty() ? "" : ": ") << r.reason;
+      throw std::runtime_error(os.str());
+    }
+    const double err = relative_error(r.e, exact.e);
+    study.settings.push_back(setting);
+    study.steps.push_back(static_cast<double>(r.steps));
+    study.errors_e.push_back(err);
+    const bool fit = err >= error_floor;
+    study.fitted.push_back(fit);
+    if (fit) {
+      x.push_back(setting);
+      y.push_back(err);
+    }
+  }
+  if (x.size() < 2)
+    throw std::runtime_error("measure_order: fewer than two points above the error floor for " +
+                             std::string(to_string(kind)));
+  study.observed_order = fitted_slope(x, y);
+  return study;
+}
+
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
                                      std::vector<double> dts, bool locate_events) {
   if (base.law != LawKind::linearized)
     throw std::invalid_argument("measure_convergence: the closed form needs LawKind::linearized");
-  if (kind != IntegratorKind::rk4 && kind != IntegratorKind::dp45)
-    throw std::invalid_argument("measure_convergence: integrator must be rk4 or dp45");
+  if (!traits(kind).fixed_step_mode)
+    throw std::invalid_argument("measure_convergence: the integrator needs a fixed-step mode");
   if (dts.size() < 2 ||
       std::all_of(dts.begin(), dts.end(), [&](double dt) { return dt == dts[0]; }))
     throw std::invalid_argument("measure_convergence: needs at least two distinct dts");
@@ -188,7 +232,7 @@ ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKi
     SimulationRequest req = base;
     req.integrator = kind;
     req.options.dt = dt;
-    req.options.fixed_step = kind == IntegratorKind::dp45;
+    req.options.fixed_step = true;
     req.options.locate_events = locate_events;
     const ImpactResult r = simulate(req);
     if (!r.separated()) {

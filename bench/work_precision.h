@@ -82,10 +82,8 @@ struct WorkPrecisionSeries {
 };
 
 struct WorkPrecisionOptions {
-  // The six double-precision integrators (everything but mp50).
-  std::vector<IntegratorKind> integrators = {
-      IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
-      IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf};
+  // Every double-precision integrator of the table (all but the reference).
+  std::vector<IntegratorKind> integrators = production_integrators();
   // rtol (= atol) of the adaptive integrators, 1e-4 ... 1e-13.
   std::vector<double> rtols = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
   // Fixed steps in tau for rk4 (its error ~ dt^4 spans about the same range as rtols).
@@ -127,8 +125,27 @@ struct ConvergenceStudy {
 // with the closed form of the linearized model, with or without a dashpot
 // (oracles::solve_linear_model, paper eqs 22-25). Preconditions (std::invalid_argument
 // otherwise): base.law is LawKind::linearized, the closed form rebounds (no capture), kind is
-// rk4 or dp45, at least two distinct dts. Throws std::runtime_error naming dt if a run fails.
+// an integrator with a fixed-step mode, at least two distinct dts. Throws std::runtime_error naming
+// dt if a run fails.
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
                                      std::vector<double> dts, bool locate_events);
+
+// Observed order of an integrator of the table with a fixed-step mode
+// (IntegratorTraits::fixed_step_mode), on the closed form of the linearized model (paper eqs
+// 22-25; oracles::solve_linear_model): run at each fixed step dt of `settings` (normalised
+// time) with error control off and events located; the order is the least-squares slope of
+// log(error of e) on log(dt). Points whose error is below `error_floor` (round-off
+// territory) are left out of the fit and marked so. std::invalid_argument for an integrator
+// without a fixed-step mode or a base request that is not the linearized law with a rebound.
+struct OrderStudy {
+  IntegratorKind integrator = IntegratorKind::rk4;
+  std::vector<double> settings;  // dt (fixed step) or rtol (adaptive), as run
+  std::vector<double> steps;     // accepted steps of each run
+  std::vector<double> errors_e;  // |e - e_exact| / e_exact, floored at kErrorFloor
+  std::vector<bool> fitted;      // whether each point entered the fit
+  double observed_order = 0.0;
+};
+OrderStudy measure_order(const SimulationRequest& base, IntegratorKind kind,
+                         const std::vector<double>& settings, double error_floor);
 
 }  // namespace ivv::bench

@@ -498,6 +498,8 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
     t += "</tbody></table>\n";
     out += "<details class=\"case\"><summary>every point of this study</summary><div>" + t +
            "</div></details>\n";
+    if (&study == &s.studies.front() && !s.ratios.empty())
+      out += "<h4>ivv against the peers</h4>\n" + ratio_table_html(s);
   }
   out += "<h3>Convergence order</h3>\n";
   out += book.add(s.figures.at(fig++));

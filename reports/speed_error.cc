@@ -28,7 +28,7 @@ std::string machine_text(const bench::MachineInfo& m) {
 }
 
 void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::string& id,
-                            std::vector<Figure>& out) {
+                            const std::vector<bench::BenchPoint>& peers, std::vector<Figure>& out) {
   struct Metric {
     const char* key;
     const char* name;
@@ -59,6 +59,17 @@ void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::s
         c.y.push_back(pt.*(m.error));
       }
       p.series.push_back(c);
+    }
+    for (bench::Peer peer : bench::kPeers) {
+      Series c;
+      c.label = "peer: " + bench::to_string(peer);
+      c.style = Series::Style::points;
+      for (const auto& pt : peers) {
+        if (pt.integrator != bench::to_string(peer) || !pt.ok) continue;
+        c.x.push_back(pt.us_per_impact * 1e-6);
+        c.y.push_back(std::string(m.key) == "e" ? pt.err_e : pt.err_F);
+      }
+      if (!c.x.empty()) p.series.push_back(c);
     }
     std::string caption =
         "Scene: " + escape(study.label) + ". One point per tolerance (" + "rtol = atol from " +
@@ -126,7 +137,31 @@ SpeedSection speed_section(const SectionOptions& options) {
       }
     };
     out.studies.push_back(bench::measure_work_precision(spec.label, base, o));
-    work_precision_figures(out.studies.back(), spec.id, out.figures);
+    std::vector<bench::BenchPoint> peers;
+    if (spec.id == "paper") {
+      options.say("speed: the peers (GSL rk8pd driver, odeint dense dopri5) on the paper scene");
+      out.peers = bench::measure_peers(wp.rtols, out.studies.back().reference,
+                                       wp.min_seconds_per_point, wp.min_repeats);
+      std::vector<bench::BenchPoint> ivv_points;
+      for (const auto& s : out.studies.back().series)
+        for (const auto& pt : s.points) {
+          bench::BenchPoint b;
+          b.integrator = std::string(to_string(s.integrator));
+          b.law = "elastoplastic";
+          b.scene = bench::scene_label(1.0, 0.1);
+          b.rtol = pt.tolerance;
+          b.ok = pt.ok;
+          b.err_e = pt.error_e;
+          b.err_F = pt.error_F_max;
+          b.err_t = pt.error_t_contact;
+          b.us_per_impact = pt.seconds_per_impact * 1e6;
+          b.rhs_evals = pt.rhs_evaluations;
+          ivv_points.push_back(b);
+        }
+      out.ratios = bench::ratio_table(ivv_points, out.peers);
+      peers = out.peers;
+    }
+    work_precision_figures(out.studies.back(), spec.id, peers, out.figures);
   }
 
   options.say("speed: convergence order of rk4 and dp45 (fixed step), with and without events");
@@ -174,10 +209,7 @@ SpeedSection speed_section(const SectionOptions& options) {
 
   options.say("speed: hard cases, every double-precision integrator");
   {
-    const std::vector<IntegratorKind> integrators = {
-        IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4,
-        IntegratorKind::rk4,           IntegratorKind::dp45,
-        IntegratorKind::gsl_rk8pd,     IntegratorKind::gsl_msbdf};
+    const std::vector<IntegratorKind> integrators = production_integrators();
     const double nan = std::numeric_limits<double>::quiet_NaN();
     auto undamped_e = [](const Scene& s) {
       return oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
@@ -260,6 +292,29 @@ SpeedSection speed_section(const SectionOptions& options) {
     }
   }
   return out;
+}
+
+std::string ratio_table_html(const SpeedSection& s) {
+  std::vector<std::string> head = {"error of e at most", "ivv best [µs]", "ivv integrator"};
+  for (bench::Peer p : bench::kPeers) {
+    head.push_back(bench::to_string(p) + " [µs]");
+    head.push_back("ratio");
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : s.ratios) {
+    std::vector<std::string> row = {number(r.level), number(r.ivv_us, 3), escape(r.ivv_integrator)};
+    for (std::size_t i = 0; i < r.peer_us.size(); ++i) {
+      row.push_back(number(r.peer_us[i], 3));
+      row.push_back(number(r.peer_ratio[i], 3));
+    }
+    rows.push_back(row);
+  }
+  return "<p>Paper scene, v<sub>0</sub> = 1 m/s, ζ = 0.1, elastoplastic: for each error level the "
+         "fastest run of any ivv integrator whose relative error of e is within it, and the "
+         "fastest run of each peer (same scene, same mp50 reference, same machine and run); "
+         "ratio = peer time / ivv time (above 1: ivv is faster). NaN: no run reached the "
+         "level.</p>\n" +
+         table(head, rows);
 }
 
 }  // namespace ivv::reports

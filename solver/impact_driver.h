@@ -122,6 +122,9 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
   sys.branch = typename System::history_type{};
   sys.tension = law_allows_tension(sys.law);
   stepper.start(sys, tau, x);
+  // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force and
+  // separation or capture, with room for a law with more segments
+  run.events.reserve(8);
   run.events.push_back({EventKind::onset, tau, x, sys.force(x)});
   if (observer) (*observer)(0.0, x, sys);
   bool peak_fired = false;
@@ -195,8 +198,14 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     std::array<Active, 4> active{};
     int n_active = 0;
     const bool loading = sys.branch.phase == Phase::loading;
-    if (loading && sys.law.segment_end(sys.branch))
-      active[n_active++] = {EventKind::yield, Direction::rising, false};
+    // z - z_y is monotone over a loading step on which dz/dtau > 0 at both ends: while z' > 0,
+    // z'' < 0 (see `monotone` above), so z' cannot dip below 0 and come back within the step.
+    // Only a step that also reaches maximum compression needs the yield event probed (and,
+    // for a dense-output stepper, its interpolant built on every loading step otherwise).
+    if (loading && sys.law.segment_end(sys.branch)) {
+      const bool z_rising = sys.z_rate(stepper.x0()) > 0 && sys.z_rate(stepper.x1()) > 0;
+      active[n_active++] = {EventKind::yield, Direction::rising, z_rising};
+    }
     if (loading) active[n_active++] = {EventKind::max_compression, Direction::falling, true};
     if (!run.has_max_displacement)
       active[n_active++] = {EventKind::max_displacement, Direction::falling, true};

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace ivv {
 
@@ -23,16 +24,17 @@ class InputError : public std::runtime_error {
   std::string field_;
 };
 
-// Throws InputError(field, "must be <range>, got <value>") unless `ok`.
-inline void require(bool ok, const std::string& field, const std::string& range, double value) {
+// Throws InputError(field, "must be <range>, got <value>") unless `ok`. Views, so that a
+// check that passes builds no string (validation runs once per impact, on the hot path).
+inline void require(bool ok, std::string_view field, std::string_view range, double value) {
   if (ok) return;
   std::ostringstream os;
   os << "must be " << range << ", got " << value;
-  throw InputError(field, os.str());
+  throw InputError(std::string(field), os.str());
 }
 
 // The most common precondition: a finite number > 0.
-inline void require_positive(const std::string& field, double value) {
+inline void require_positive(std::string_view field, double value) {
   require(std::isfinite(value) && value > 0.0, field, "positive and finite", value);
 }
 

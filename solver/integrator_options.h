@@ -17,7 +17,7 @@ struct IntegratorOptions {
   double rtol = 1e-10;         // relative error per step (adaptive integrators)
   double atol = 1e-12;         // absolute error per step, normalised units
   double dt = 0.0;             // fixed step in tau: rk4, and dp45 with fixed_step (0 = default)
-  bool fixed_step = false;     // dp45 only: no error control (convergence studies)
+  bool fixed_step = false;     // steppers with traits().fixed_step_mode: no error control
   double initial_dt = 1e-4;    // first trial step in tau (adaptive integrators)
   long max_steps = 2'000'000;  // accepted steps per impact before giving up
   double tau_max = 1e8;        // normalised time limit before giving up

@@ -1,5 +1,6 @@
 // Instantiates simulate() for Dp45Stepper (one translation unit per integrator).
 #include "solver/simulate_impl.h"
+#include "solver/stepper_traits.h"
 #include "solver/steppers/dp45.h"
 
 namespace ivv::detail {
@@ -7,6 +8,10 @@ namespace ivv::detail {
 ImpactResult simulate_dp45(const SimulationRequest& req, const DerivedParameters& p,
                            std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<Dp45Stepper>(req, p, trajectory);
+}
+
+IntegratorTraits traits_dp45() {
+  return stepper_traits<Dp45Stepper>(IntegratorKind::dp45);
 }
 
 }  // namespace ivv::detail

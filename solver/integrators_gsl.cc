@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "solver/simulate_impl.h"
+#include "solver/stepper_traits.h"
 #include "solver/steppers/gsl_odeiv2.h"
 
 namespace ivv {
@@ -32,6 +33,14 @@ ImpactResult simulate_gsl_rk8pd(const SimulationRequest& req, const DerivedParam
 ImpactResult simulate_gsl_msbdf(const SimulationRequest& req, const DerivedParameters& p,
                                 std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<GslMsbdf>(req, p, trajectory);
+}
+
+IntegratorTraits traits_gsl_rk8pd() {
+  return stepper_traits<GslRk8pd>(IntegratorKind::gsl_rk8pd);
+}
+
+IntegratorTraits traits_gsl_msbdf() {
+  return stepper_traits<GslMsbdf>(IntegratorKind::gsl_msbdf);
 }
 
 }  // namespace detail

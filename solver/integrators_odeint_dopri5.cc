@@ -1,5 +1,6 @@
 // Instantiates simulate() for OdeintDopri5Stepper (one translation unit per integrator).
 #include "solver/simulate_impl.h"
+#include "solver/stepper_traits.h"
 #include "solver/steppers/odeint_dopri5.h"
 
 namespace ivv::detail {
@@ -7,6 +8,10 @@ namespace ivv::detail {
 ImpactResult simulate_odeint_dopri5(const SimulationRequest& req, const DerivedParameters& p,
                                     std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<OdeintDopri5Stepper>(req, p, trajectory);
+}
+
+IntegratorTraits traits_odeint_dopri5() {
+  return stepper_traits<OdeintDopri5Stepper>(IntegratorKind::odeint_dopri5);
 }
 
 }  // namespace ivv::detail

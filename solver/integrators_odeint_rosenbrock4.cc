@@ -1,5 +1,6 @@
 // Instantiates simulate() for OdeintRosenbrock4Stepper (one translation unit per integrator).
 #include "solver/simulate_impl.h"
+#include "solver/stepper_traits.h"
 #include "solver/steppers/odeint_rosenbrock4.h"
 
 namespace ivv::detail {
@@ -7,6 +8,10 @@ namespace ivv::detail {
 ImpactResult simulate_odeint_rosenbrock4(const SimulationRequest& req, const DerivedParameters& p,
                                          std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<OdeintRosenbrock4Stepper>(req, p, trajectory);
+}
+
+IntegratorTraits traits_odeint_rosenbrock4() {
+  return stepper_traits<OdeintRosenbrock4Stepper>(IntegratorKind::odeint_rosenbrock4);
 }
 
 }  // namespace ivv::detail

@@ -1,5 +1,6 @@
 // Instantiates simulate() for Rk4Stepper (one translation unit per integrator).
 #include "solver/simulate_impl.h"
+#include "solver/stepper_traits.h"
 #include "solver/steppers/rk4.h"
 
 namespace ivv::detail {
@@ -7,6 +8,10 @@ namespace ivv::detail {
 ImpactResult simulate_rk4(const SimulationRequest& req, const DerivedParameters& p,
                           std::vector<TrajectoryPoint>* trajectory) {
   return simulate_with<Rk4Stepper>(req, p, trajectory);
+}
+
+IntegratorTraits traits_rk4() {
+  return stepper_traits<Rk4Stepper>(IntegratorKind::rk4);
 }
 
 }  // namespace ivv::detail

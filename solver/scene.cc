@@ -15,11 +15,12 @@ namespace {
 
 // Accepted ranges. They are wide on purpose (SPEC §6 asks for masses from 1e-6 to 1e3 kg and
 // velocities from 1e-6 to beyond 100 m/s); they exclude only the physically meaningless.
-void require_positive_finite(const std::string& field, double v, const char* unit) {
-  require(std::isfinite(v) && v > 0.0, field, std::string("a finite number > 0 ") + unit, v);
+void require_positive_finite(std::string_view field, double v, const char* unit) {
+  if (std::isfinite(v) && v > 0.0) return;  // no string built on the hot path
+  require(false, field, std::string("a finite number > 0 ") + unit, v);
 }
 
-void require_poisson(const std::string& field, double nu) {
+void require_poisson(std::string_view field, double nu) {
   require(std::isfinite(nu) && nu > -1.0 && nu < 0.5, field, "a Poisson's ratio in (-1, 0.5)", nu);
 }
 

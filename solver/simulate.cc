@@ -15,11 +15,6 @@ constexpr std::array kLaws = [] {
   for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<LawKind>(i);
   return kinds;
 }();
-constexpr std::array kIntegrators = {
-    IntegratorKind::odeint_dopri5, IntegratorKind::odeint_rosenbrock4, IntegratorKind::rk4,
-    IntegratorKind::dp45,          IntegratorKind::gsl_rk8pd,          IntegratorKind::gsl_msbdf,
-    IntegratorKind::mp50};
-
 template <class Kind, std::size_t N>
 std::string name_list(const std::array<Kind, N>& kinds) {
   std::string out;
@@ -31,49 +26,6 @@ std::string name_list(const std::array<Kind, N>& kinds) {
 
 std::span<const LawKind> all_laws() {
   return kLaws;
-}
-std::span<const IntegratorKind> all_integrators() {
-  return kIntegrators;
-}
-
-std::string_view to_string(IntegratorKind k) {
-  switch (k) {
-    case IntegratorKind::odeint_dopri5:
-      return "odeint-dopri5";
-    case IntegratorKind::odeint_rosenbrock4:
-      return "odeint-rosenbrock4";
-    case IntegratorKind::rk4:
-      return "rk4";
-    case IntegratorKind::dp45:
-      return "dp45";
-    case IntegratorKind::gsl_rk8pd:
-      return "gsl-rk8pd";
-    case IntegratorKind::gsl_msbdf:
-      return "gsl-msbdf";
-    case IntegratorKind::mp50:
-      return "mp50";
-  }
-  return "?";
-}
-
-std::string_view describe(IntegratorKind k) {
-  switch (k) {
-    case IntegratorKind::odeint_dopri5:
-      return "Boost.Odeint Dormand-Prince 5(4), controlled, dense output (default)";
-    case IntegratorKind::odeint_rosenbrock4:
-      return "Boost.Odeint Rosenbrock 4(3), linearly implicit, dense output: stiff scenes";
-    case IntegratorKind::rk4:
-      return "hand-written classical Runge-Kutta 4, fixed step (--dt), Hermite interpolant";
-    case IntegratorKind::dp45:
-      return "hand-written Dormand-Prince 5(4) from its tableau, own dense output";
-    case IntegratorKind::gsl_rk8pd:
-      return "GSL odeiv2 Runge-Kutta Prince-Dormand 8(9), Hermite interpolant";
-    case IntegratorKind::gsl_msbdf:
-      return "GSL odeiv2 multistep BDF (orders 1-5) with Jacobian: stiff scenes";
-    case IntegratorKind::mp50:
-      return "50-digit reference: odeint Runge-Kutta-Fehlberg 7(8) on cpp_bin_float_50, tol 1e-26";
-  }
-  return "?";
 }
 
 std::string_view to_string(ImpactStatus s) {
@@ -108,14 +60,10 @@ std::string_view to_string(EventKind k) {
   return "?";
 }
 
-IntegratorKind parse_integrator(const std::string& name, const std::string& field) {
-  for (IntegratorKind k : kIntegrators)
-    if (name == to_string(k)) return k;
-  throw InputError(field,
-                   "unknown integrator '" + name + "'; valid names: " + name_list(kIntegrators));
-}
-
 std::string IntegratorOptions::invalid_reason() const {
+  const bool valid = rtol >= 1e-15 && rtol <= 1e-2 && atol > 0 && atol <= 1e-2 && dt >= 0 &&
+                     dt <= 0.5 && std::isfinite(dt) && max_steps > 0;
+  if (valid) return {};  // no stream on the hot path (validated once per impact)
   std::ostringstream os;
   if (!(rtol >= 1e-15 && rtol <= 1e-2))
     os << "--rtol must lie in [1e-15, 1e-2] (got " << rtol << ")";
@@ -181,6 +129,8 @@ ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>
       return detail::simulate_rk4(req, p, trajectory);
     case IntegratorKind::dp45:
       return detail::simulate_dp45(req, p, trajectory);
+    case IntegratorKind::dop853:
+      return detail::simulate_dop853(req, p, trajectory);
     case IntegratorKind::gsl_rk8pd:
       return detail::simulate_gsl_rk8pd(req, p, trajectory);
     case IntegratorKind::gsl_msbdf:

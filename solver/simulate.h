@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "solver/integrator_options.h"
+#include "solver/integrators.h"
 #include "solver/law_registry.h"
 #include "solver/laws/expression.h"
 #include "solver/result.h"
@@ -19,24 +20,11 @@
 
 namespace ivv {
 
-enum class IntegratorKind {
-  odeint_dopri5,
-  odeint_rosenbrock4,
-  rk4,
-  dp45,
-  gsl_rk8pd,
-  gsl_msbdf,
-  mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
-};
+// IntegratorKind, the table of integrator traits and parse_integrator: solver/integrators.h.
 
 // The built-in laws (not `expression`), in registry order.
 std::span<const LawKind> all_laws();
-std::span<const IntegratorKind> all_integrators();
-std::string_view to_string(IntegratorKind k);
-// One line on what each integrator is (for `ivv integrators`).
-std::string_view describe(IntegratorKind k);
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
-IntegratorKind parse_integrator(const std::string& name, const std::string& field = "--integrator");
 
 struct SimulationRequest {
   Scene scene;

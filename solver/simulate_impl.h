@@ -29,6 +29,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   r.reason = run.reason;
   r.steps = run.steps;
   r.rhs_evaluations = sys.rhs_evaluations;
+  r.events.reserve(run.events.size());
   for (const auto& ev : run.events) {
     r.events.push_back(
         {ev.kind, d(ev.tau) * Ts, d(sys.z(ev.x)) * L, d(ev.x[System::A]) * L, d(ev.force) * Fs});
@@ -192,6 +193,8 @@ ImpactResult simulate_rk4(const SimulationRequest&, const DerivedParameters&,
                           std::vector<TrajectoryPoint>*);
 ImpactResult simulate_dp45(const SimulationRequest&, const DerivedParameters&,
                            std::vector<TrajectoryPoint>*);
+ImpactResult simulate_dop853(const SimulationRequest&, const DerivedParameters&,
+                             std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_rk8pd(const SimulationRequest&, const DerivedParameters&,
                                 std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_msbdf(const SimulationRequest&, const DerivedParameters&,

@@ -13,6 +13,7 @@
 
 #include "solver/input_error.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/dop853.h"
 #include "solver/steppers/dp45.h"
 #include "solver/steppers/gsl_odeiv2.h"
 #include "solver/steppers/odeint_dopri5.h"
@@ -38,6 +39,8 @@ decltype(auto) with_stepper(IntegratorKind kind, F&& f) {
       return f.template operator()<Rk4Stepper, double>();
     case IntegratorKind::dp45:
       return f.template operator()<Dp45Stepper, double>();
+    case IntegratorKind::dop853:
+      return f.template operator()<Dop853Stepper, double>();
     case IntegratorKind::gsl_rk8pd:
       return f.template operator()<GslRk8pdStepper, double>();
     case IntegratorKind::gsl_msbdf:

@@ -16,7 +16,7 @@ std::string name(IntegratorKind k) {
   return std::string(to_string(k));
 }
 bool implicit(IntegratorKind k) {
-  return k == IntegratorKind::odeint_rosenbrock4 || k == IntegratorKind::gsl_msbdf;
+  return traits(k).implicit;
 }
 
 void compare(WorstError& w, const ImpactResult& r, const ImpactResult& ref,
@@ -195,8 +195,7 @@ Outcome linearized_outside_domain() {
 }  // namespace
 
 void register_stability_cases(Registry& reg) {
-  for (IntegratorKind k : all_integrators()) {
-    if (k == IntegratorKind::mp50) continue;
+  for (IntegratorKind k : production_integrators()) {
     const Tolerance tol = default_settings_tolerance(k);
     const std::string n = name(k);
     reg.add({"stability.grazing-1e-6." + n, "Grazing impact v0 = 1e-6 m/s (" + n + ")",

@@ -50,6 +50,12 @@ class Dp45Stepper {
   static constexpr std::string_view name = "dp45";
   static constexpr bool dense_output = true;
   static constexpr int order = 5;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = false;  // adaptive; IntegratorOptions::fixed_step turns it off
+  static constexpr bool fixed_step_mode = true;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "hand-written Dormand-Prince 5(4) from its tableau, own dense output";
 
   explicit Dp45Stepper(const IntegratorOptions& opt)
       : rtol_(opt.rtol),

@@ -70,6 +70,14 @@ class GslStepper : public HermiteSteps<System> {
   using T = typename System::value_type;
   static constexpr std::string_view name = Method == GslMethod::rk8pd ? "gsl-rk8pd" : "gsl-msbdf";
   static constexpr int order = Method == GslMethod::rk8pd ? 8 : 5;
+  static constexpr bool implicit = Method == GslMethod::msbdf;
+  static constexpr bool fixed_step = false;
+  static constexpr bool fixed_step_mode = Method == GslMethod::rk8pd;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      Method == GslMethod::rk8pd
+          ? "GSL odeiv2 Runge-Kutta Prince-Dormand 8(9), Hermite interpolant"
+          : "GSL odeiv2 multistep BDF (orders 1-5) with Jacobian: stiff scenes";
   static constexpr std::size_t N = System::N;
 
   explicit GslStepper(const IntegratorOptions& opt)
@@ -92,7 +100,15 @@ class GslStepper : public HermiteSteps<System> {
     for (std::size_t i = 0; i < N; ++i) y[i] = x0_[i];
     double t = t0_;
     gsl_odeiv2_driver* d = driver_.get();
-    const int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, opt_.tau_max, &h_, y);
+    int status;
+    if (Method == GslMethod::rk8pd && opt_.fixed_step) {  // error control off: h = dt
+      double yerr[N], f[N];
+      for (std::size_t i = 0; i < N; ++i) f[i] = f0_[i];
+      status = gsl_odeiv2_step_apply(d->s, t0_, opt_.fixed_dt(), y, yerr, f, nullptr, d->sys);
+      t = t0_ + opt_.fixed_dt();
+    } else {
+      status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, opt_.tau_max, &h_, y);
+    }
     if (status != GSL_SUCCESS || !(t > t0_)) {
       return StepResult::failure(std::string(name) + ": " + gsl_strerror(status) +
                                  " at tau = " + std::to_string(t0_));

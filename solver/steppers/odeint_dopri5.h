@@ -20,14 +20,25 @@ class OdeintDopri5Stepper {
   static constexpr std::string_view name = "odeint-dopri5";
   static constexpr bool dense_output = true;
   static constexpr int order = 5;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = false;
+  static constexpr bool fixed_step_mode = true;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "Boost.Odeint Dormand-Prince 5(4), controlled, dense output (default)";
 
+  // With IntegratorOptions::fixed_step every step is dt: the tolerances are set so large that
+  // no step is rejected (1e30) and odeint's max_dt caps the controller's growth at dt.
   explicit OdeintDopri5Stepper(const IntegratorOptions& opt)
       : stepper_(boost::numeric::odeint::make_dense_output(
-            opt.atol, opt.rtol, boost::numeric::odeint::runge_kutta_dopri5<state_type>())),
-        dt_(opt.initial_dt) {}
+            opt.fixed_step ? 1e30 : opt.atol, opt.fixed_step ? 1e30 : opt.rtol,
+            opt.fixed_step ? opt.fixed_dt() : 0.0,
+            boost::numeric::odeint::runge_kutta_dopri5<state_type>())),
+        dt_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt),
+        fixed_(opt.fixed_step) {}
 
   void start(const System&, T t, const state_type& x) {
-    if (started_) dt_ = stepper_.current_time_step();
+    if (started_ && !fixed_) dt_ = stepper_.current_time_step();
     stepper_.initialize(x, t, dt_);
     started_ = true;
   }
@@ -53,9 +64,10 @@ class OdeintDopri5Stepper {
 
  private:
   using dense_type = decltype(boost::numeric::odeint::make_dense_output(
-      0.0, 0.0, boost::numeric::odeint::runge_kutta_dopri5<state_type>()));
+      0.0, 0.0, 0.0, boost::numeric::odeint::runge_kutta_dopri5<state_type>()));
   mutable dense_type stepper_;
   T dt_;
+  bool fixed_;
   bool started_ = false;
   long steps_ = 0;
 };

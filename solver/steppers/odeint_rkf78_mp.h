@@ -45,6 +45,12 @@ class OdeintRkf78MpStepper : public HermiteSteps<System> {
   using T = typename System::value_type;
   static constexpr std::string_view name = "mp50";
   static constexpr int order = 8;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = false;
+  static constexpr bool fixed_step_mode = false;
+  static constexpr bool reference = true;  // the yardstick the others are measured against
+  static constexpr std::string_view description =
+      "50-digit reference: odeint Runge-Kutta-Fehlberg 7(8) on cpp_bin_float_50, tol 1e-26";
 
   explicit OdeintRkf78MpStepper(const IntegratorOptions& opt)
       : controlled_(MpErrorChecker<T>{T(opt.reference_tolerance), T(opt.reference_tolerance)}),

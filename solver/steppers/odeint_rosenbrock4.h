@@ -25,6 +25,12 @@ class OdeintRosenbrock4Stepper {
   static constexpr std::string_view name = "odeint-rosenbrock4";
   static constexpr bool dense_output = true;
   static constexpr int order = 4;
+  static constexpr bool implicit = true;
+  static constexpr bool fixed_step = false;
+  static constexpr bool fixed_step_mode = false;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "Boost.Odeint Rosenbrock 4(3), linearly implicit, dense output: stiff scenes";
   static constexpr std::size_t N = System::N;
 
   explicit OdeintRosenbrock4Stepper(const IntegratorOptions& opt)

@@ -29,6 +29,12 @@ class Rk4Stepper : public HermiteSteps<System> {
   using T = typename System::value_type;
   static constexpr std::string_view name = "rk4";
   static constexpr int order = 4;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = true;
+  static constexpr bool fixed_step_mode = true;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "hand-written classical Runge-Kutta 4, fixed step (--dt), Hermite interpolant";
 
   explicit Rk4Stepper(const IntegratorOptions& opt) : h_(opt.fixed_dt()) {}
 

@@ -1,0 +1,194 @@
+#include "bench/peers.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <array>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+
+namespace ivv::bench {
+namespace {
+
+using State = std::array<double, 3>;      // a, w, z (normalised)
+constexpr double kOutputInterval = 0.05;  // gsl peer: output grid in tau
+constexpr double kTauLimit = 1e3;         // no paper-scene contact lasts this long
+
+// The law and the equations, as a user would write them (paper eqs 8-10, normalised).
+struct Problem {
+  double L, Fs, K_h, z_y, K_y, two_zeta;
+  bool unloading = false;
+  double z_m = 0.0;  // [m]
+  mutable long evals = 0;
+
+  double force(double zbar) const {
+    const double z = zbar * L;
+    double F;
+    if (!unloading) {
+      F = z <= z_y ? K_h * z * std::sqrt(z) : K_y * (z - z_y) + K_h * z_y * std::sqrt(z_y);
+    } else if (z_m > z_y) {
+      F = K_h * (z * std::sqrt(std::max(z, 0.0)) - z_m * std::sqrt(z_m) + z_y * std::sqrt(z_y)) +
+          K_y * (z_m - z_y);
+    } else {
+      F = K_h * z * std::sqrt(std::max(z, 0.0));
+    }
+    return F / Fs;
+  }
+  void operator()(const State& x, State& d, double) const {
+    ++evals;
+    const double F = force(x[2]);
+    d[0] = x[1];
+    d[1] = -F;
+    d[2] = x[1] - two_zeta * F;
+  }
+  // event of the current phase: z' on loading (falls through 0), F on unloading
+  double event(const State& x) const {
+    const double F = force(x[2]);
+    return unloading ? F : x[1] - two_zeta * F;
+  }
+};
+
+Problem make_problem(const Scene& scene) {
+  const DerivedParameters p = derive(scene);
+  const Scales k = scales(scene, p, ScaleBasis::yield);  // the elastoplastic law's own
+  return {k.length, k.force, p.K_h, p.z_y, p.K_y, 2.0 * p.zeta};
+}
+
+bool converged(double lo, double hi) {
+  return hi - lo <= 1e-13 * (1 + std::abs(hi));
+}
+
+PeerResult finish(const Problem& pb, const Scene& scene, const State& x, double tau, double F_max) {
+  PeerResult r;
+  r.ok = true;
+  r.e = -x[1];
+  r.F_max = F_max * pb.Fs;
+  r.t_contact = tau / derive(scene).omega0;
+  r.rhs_evaluations = pb.evals;
+  return r;
+}
+
+int gsl_rhs(double, const double y[], double dydt[], void* params) {
+  const auto* pb = static_cast<const Problem*>(params);
+  State x{y[0], y[1], y[2]}, d;
+  (*pb)(x, d, 0.0);
+  for (int i = 0; i < 3; ++i) dydt[i] = d[i];
+  return GSL_SUCCESS;
+}
+
+PeerResult gsl_peer(const Scene& scene, double tol) {
+  Problem pb = make_problem(scene);
+  gsl_odeiv2_system sys{gsl_rhs, nullptr, 3, &pb};
+  gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-4, tol, tol);
+  PeerResult fail;
+  State x{0.0, 1.0, 0.0};
+  double tau = 0.0, F_max = 0.0;
+  auto integrate = [&](State& y, double& t, double t1) {
+    double buf[3] = {y[0], y[1], y[2]};
+    const int status = gsl_odeiv2_driver_apply(d, &t, t1, buf);
+    y = {buf[0], buf[1], buf[2]};
+    return status == GSL_SUCCESS;
+  };
+  for (int phase = 0; phase < 2; ++phase) {
+    double g_prev = pb.event(x);
+    for (;;) {
+      State y = x;
+      double t = tau;
+      if (!integrate(y, t, tau + kOutputInterval) || t > kTauLimit) {
+        gsl_odeiv2_driver_free(d);
+        fail.reason = "gsl driver failed";
+        return fail;
+      }
+      const double g = pb.event(y);
+      if ((g_prev > 0) != (g > 0)) {
+        // bisect by re-integrating from the last output (tau, x)
+        double lo = tau, hi = t;
+        State x_hi = y;
+        while (!converged(lo, hi)) {
+          const double mid = 0.5 * (lo + hi);
+          State ym = x;
+          double tm = tau;
+          gsl_odeiv2_driver_reset(d);
+          integrate(ym, tm, mid);
+          if ((pb.event(ym) > 0) == (g_prev > 0)) {
+            lo = mid;
+          } else {
+            hi = mid;
+            x_hi = ym;
+          }
+        }
+        x = x_hi;
+        tau = hi;
+        gsl_odeiv2_driver_reset(d);
+        break;
+      }
+      x = y;
+      tau = t;
+      g_prev = g;
+    }
+    if (phase == 0) {
+      F_max = pb.force(x[2]);
+      pb.z_m = x[2] * pb.L;
+      pb.unloading = true;
+    }
+  }
+  gsl_odeiv2_driver_free(d);
+  return finish(pb, scene, x, tau, F_max);
+}
+
+PeerResult odeint_peer(const Scene& scene, double tol) {
+  namespace odeint = boost::numeric::odeint;
+  Problem pb = make_problem(scene);
+  auto stepper = odeint::make_dense_output(tol, tol, odeint::runge_kutta_dopri5<State>());
+  State x{0.0, 1.0, 0.0};
+  double tau = 0.0, F_max = 0.0, dt = 1e-4;
+  auto rhs = [&pb](const State& s, State& d, double t) { pb(s, d, t); };
+  for (int phase = 0; phase < 2; ++phase) {
+    stepper.initialize(x, tau, dt);
+    double g_prev = pb.event(x);
+    for (;;) {
+      stepper.do_step(rhs);
+      if (stepper.current_time() > kTauLimit) return {false, "no event before tau = 1e3"};
+      const double g = pb.event(stepper.current_state());
+      if ((g_prev > 0) != (g > 0)) {
+        double lo = stepper.previous_time(), hi = stepper.current_time();
+        State xm = stepper.current_state();
+        State x_hi = xm;
+        while (!converged(lo, hi)) {
+          const double mid = 0.5 * (lo + hi);
+          stepper.calc_state(mid, xm);
+          if ((pb.event(xm) > 0) == (g_prev > 0)) {
+            lo = mid;
+          } else {
+            hi = mid;
+            x_hi = xm;
+          }
+        }
+        x = x_hi;
+        tau = hi;
+        dt = stepper.current_time_step();
+        break;
+      }
+      g_prev = g;
+    }
+    if (phase == 0) {
+      F_max = pb.force(x[2]);
+      pb.z_m = x[2] * pb.L;
+      pb.unloading = true;
+    }
+  }
+  return finish(pb, scene, x, tau, F_max);
+}
+
+}  // namespace
+
+std::string to_string(Peer p) {
+  return p == Peer::gsl_rk8pd_driver ? "gsl-rk8pd-driver" : "odeint-dopri5-dense";
+}
+
+PeerResult run_peer(Peer peer, const Scene& scene, double tol) {
+  gsl_set_error_handler_off();
+  return peer == Peer::gsl_rk8pd_driver ? gsl_peer(scene, tol) : odeint_peer(scene, tol);
+}
+
+}  // namespace ivv::bench

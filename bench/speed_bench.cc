@@ -1,0 +1,401 @@
+#include "bench/speed_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "oracles/linear_model.h"
+
+namespace ivv::bench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kStiffZeta = 100.0;
+// the stiff scene's reference: dop853 this tight (see the header)
+constexpr double kStiffReferenceTol = 1e-13;
+
+struct Timing {
+  double min_seconds;
+  int min_repeats;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Median wall-clock of f() over repeats [us]; f runs at least min_repeats times and until
+// min_seconds have passed.
+template <class F>
+double median_us(F&& f, const Timing& timing) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> us;
+  const auto start = Clock::now();
+  do {
+    const auto t0 = Clock::now();
+    f();
+    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+  } while (static_cast<int>(us.size()) < timing.min_repeats ||
+           std::chrono::duration<double>(Clock::now() - start).count() < timing.min_seconds);
+  return median(us);
+}
+
+double rel(double x, double ref) {
+  const double d = std::abs(x - ref);
+  const double r = ref == 0.0 ? d : d / std::abs(ref);
+  return r == 0.0 ? kErrorFloor : r;
+}
+
+Scene paper_at(double v0, double zeta) {
+  Scene s = paper_scene();
+  s.velocity = v0;
+  s.damping = zeta > 0 ? Damping::ratio(zeta) : Damping::none();
+  return s;
+}
+
+BenchPoint measure(const SimulationRequest& req, const std::string& scene,
+                   const std::string& reference_name, const ImpactResult& ref, double setting,
+                   const Timing& timing) {
+  BenchPoint pt;
+  pt.integrator = std::string(to_string(req.integrator));
+  pt.law = std::string(to_string(req.law));
+  pt.scene = scene;
+  pt.reference = reference_name;
+  pt.rtol = setting;
+  ImpactResult r = simulate(req);
+  pt.rhs_evals = r.rhs_evaluations;
+  if (!r.ok() || r.status != ref.status) {
+    pt.ok = false;
+    pt.reason = r.ok() ? "ended " + std::string(to_string(r.status)) + ", the reference " +
+                             std::string(to_string(ref.status))
+                       : r.reason;
+    pt.err_e = pt.err_F = pt.err_t = pt.us_per_impact = kNaN;
+    return pt;
+  }
+  pt.err_e = rel(r.e, ref.e);
+  pt.err_F = rel(r.F_max, ref.F_max);
+  pt.err_t = rel(r.t_contact, ref.t_contact);
+  pt.us_per_impact = median_us([&] { r = simulate(req); }, timing);
+  return pt;
+}
+
+double best_us(const std::vector<BenchPoint>& pts, const std::string& scene, const std::string& law,
+               double level, bool use_F, std::string* who = nullptr) {
+  double best = kNaN;
+  for (const BenchPoint& p : pts) {
+    if (!p.ok || p.scene != scene || p.law != law) continue;
+    const double err = use_F ? std::max(p.err_e, p.err_F) : p.err_e;
+    if (!(err <= level)) continue;
+    if (std::isnan(best) || p.us_per_impact < best) {
+      best = p.us_per_impact;
+      if (who) *who = p.integrator;
+    }
+  }
+  return best;
+}
+
+BenchTarget target(std::string name, double bound, std::string unit, double measured,
+                   std::string how) {
+  BenchTarget t{std::move(name), bound, std::move(unit), measured, false, kNaN, std::move(how)};
+  if (!std::isnan(measured)) {
+    t.ratio = measured / bound;
+    t.met = measured <= bound;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string scene_label(double v0, double zeta) {
+  std::ostringstream os;
+  os << (zeta >= kStiffZeta ? "stiff" : "paper") << " v0=" << v0 << " zeta=" << zeta;
+  return os.str();
+}
+
+std::vector<BenchPoint> measure_peers(const std::vector<double>& tols, const ImpactResult& ref,
+                                      double min_seconds, int min_repeats) {
+  const Timing timing{min_seconds, min_repeats};
+  const Scene scene = paper_at(1.0, 0.1);
+  std::vector<BenchPoint> out;
+  for (Peer peer : kPeers) {
+    for (double tol : tols) {
+      BenchPoint pt;
+      pt.integrator = to_string(peer);
+      pt.law = "elastoplastic";
+      pt.scene = scene_label(1.0, 0.1);
+      pt.reference = "mp50";
+      pt.rtol = tol;
+      PeerResult r = run_peer(peer, scene, tol);
+      pt.rhs_evals = r.rhs_evaluations;
+      pt.ok = r.ok;
+      pt.reason = r.reason;
+      if (r.ok) {
+        pt.err_e = rel(r.e, ref.e);
+        pt.err_F = rel(r.F_max, ref.F_max);
+        pt.err_t = rel(r.t_contact, ref.t_contact);
+        pt.us_per_impact = median_us([&] { r = run_peer(peer, scene, tol); }, timing);
+      } else {
+        pt.err_e = pt.err_F = pt.err_t = pt.us_per_impact = kNaN;
+      }
+      out.push_back(pt);
+    }
+  }
+  return out;
+}
+
+std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
+                                  const std::vector<BenchPoint>& peers) {
+  const std::string scene = scene_label(1.0, 0.1);
+  std::vector<RatioRow> rows;
+  for (double level : {1e-6, 1e-8, 1e-10, 1e-12}) {
+    RatioRow row;
+    row.level = level;
+    row.ivv_us = best_us(points, scene, "elastoplastic", level, false, &row.ivv_integrator);
+    for (Peer peer : kPeers) {
+      double best = kNaN;
+      for (const BenchPoint& p : peers)
+        if (p.ok && p.integrator == to_string(peer) && p.err_e <= level &&
+            (std::isnan(best) || p.us_per_impact < best))
+          best = p.us_per_impact;
+      row.peer_us.push_back(best);
+      row.peer_ratio.push_back(best / row.ivv_us);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+BenchReport run_bench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress) {
+  const auto run_start = std::chrono::steady_clock::now();
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+  BenchReport rep;
+  rep.machine = describe_machine();
+  const Timing timing = options.quick ? Timing{0.002, 3} : Timing{0.05, 5};
+  const std::vector<double> rtols =
+      options.quick
+          ? std::vector<double>{1e-6, 1e-8, 1e-10, 1e-12}
+          : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+  const std::vector<double> dts =
+      options.quick ? std::vector<double>{1e-1, 1e-2, 1e-3}
+                    : std::vector<double>{1e-1, 5e-2, 2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4};
+  ImpactResult paper_reference;
+  for (double zeta : {0.0, 0.1}) {
+    for (double v0 : {0.1, 1.0, 5.0}) {
+      const std::string label = scene_label(v0, zeta);
+      for (LawKind law : all_laws()) {
+        if (law == LawKind::linearized && v0 < 0.5) continue;     // undefined there (eq. 17)
+        if (law == LawKind::hunt_crossley && zeta > 0) continue;  // no dashpot with HC
+        SimulationRequest base;
+        base.scene = paper_at(v0, zeta);
+        base.law = law;
+        if (law == LawKind::hunt_crossley) base.parameters["mu"] = 1.0 / v0;
+        SimulationRequest rq = base;
+        rq.integrator = IntegratorKind::mp50;
+        rq.options.reference_tolerance = options.quick ? 1e-20 : 1e-26;
+        say("bench: " + label + ", " + std::string(to_string(law)) + " (mp50 reference)");
+        const ImpactResult ref = simulate(rq);
+        if (!ref.ok()) throw std::runtime_error("bench: mp50 reference failed: " + ref.reason);
+        if (v0 == 1.0 && zeta == 0.1 && law == LawKind::elastoplastic) paper_reference = ref;
+        for (IntegratorKind k : production_integrators()) {
+          for (double s : traits(k).fixed_step ? dts : rtols) {
+            SimulationRequest req = base;
+            req.integrator = k;
+            if (traits(k).fixed_step) {
+              req.options.dt = s;
+            } else {
+              req.options.rtol = req.options.atol = s;
+            }
+            rep.points.push_back(measure(req, label, "mp50", ref, s, timing));
+          }
+        }
+      }
+    }
+  }
+  {
+    const std::string label = scene_label(1.0, kStiffZeta);
+    // the linearized law is undefined there (z_m far below 2.25 z_y with so stiff a dashpot)
+    for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
+      SimulationRequest base;
+      base.scene = paper_at(1.0, kStiffZeta);
+      base.law = law;
+      SimulationRequest rq = base;
+      rq.integrator = IntegratorKind::dop853;
+      rq.options.rtol = rq.options.atol = kStiffReferenceTol;
+      say("bench: " + label + ", " + std::string(to_string(law)) + " (dop853 1e-13 reference)");
+      const ImpactResult ref = simulate(rq);
+      if (!ref.ok()) throw std::runtime_error("bench: stiff reference failed: " + ref.reason);
+      for (IntegratorKind k : production_integrators()) {
+        if (!traits(k).implicit && k != IntegratorKind::dop853) continue;
+        for (double s : rtols) {
+          if (k == IntegratorKind::dop853 && s < 1e-8) continue;  // near its own reference
+          SimulationRequest req = base;
+          req.integrator = k;
+          req.options.rtol = req.options.atol = s;
+          rep.points.push_back(measure(req, label, "dop853 at 1e-13", ref, s, timing));
+        }
+      }
+    }
+  }
+  say("bench: peers (gsl-rk8pd-driver, odeint-dopri5-dense) on the paper scene");
+  rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
+
+  say("bench: targets");
+  const std::string paper = scene_label(1.0, 0.1);
+  std::string who8, who12, whos;
+  const double t8 = best_us(rep.points, paper, "elastoplastic", 1e-8, false, &who8);
+  const double t12 = best_us(rep.points, paper, "elastoplastic", 1e-12, false, &who12);
+  rep.targets.push_back(target(
+      "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
+      "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1"));
+  rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
+                               "fastest point with err_e <= 1e-12 (" + who12 + ")"));
+  {
+    const Scene s = paper_at(1.0, 0.1);
+    const DerivedParameters p = derive(s);
+    double sink = 0;
+    constexpr int kBatch = 1000;  // one call is below the clock's resolution
+    const double us = median_us(
+                          [&] {
+                            for (int i = 0; i < kBatch; ++i)
+                              sink +=
+                                  oracles::solve_linear_model(oracles::linear_model_input(s, p)).e;
+                          },
+                          timing) /
+                      kBatch;
+    rep.targets.push_back(target("linearized closed form", 0.3, "us", sink != 0 ? us : kNaN,
+                                 "oracles::solve_linear_model on the paper scene, median of "
+                                 "batches of 1000 calls"));
+  }
+  const double ts =
+      best_us(rep.points, scene_label(1.0, kStiffZeta), "elastoplastic", 1e-6, true, &whos);
+  rep.targets.push_back(target("zeta = 100 within 1e-6", 100.0, "us", ts,
+                               "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
+                                   "), elastoplastic, against dop853 at 1e-13"));
+  {
+    // The COR map of issue 8 with the full model (no automatic model choice on this branch):
+    // dop853 at rtol = atol = 1e-8, one thread; --quick times a 40 x 10 subgrid and scales.
+    const int nv = options.quick ? 40 : 200, nz = options.quick ? 10 : 50;
+    SimulationRequest req;
+    req.law = LawKind::elastoplastic;
+    req.integrator = IntegratorKind::dop853;
+    req.options.rtol = req.options.atol = 1e-8;
+    int failed = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < nv; ++i)
+      for (int j = 0; j < nz; ++j) {
+        const double v0 = 0.1 * std::pow(100.0, i / double(nv - 1));
+        const double zeta = j / double(nz - 1);
+        req.scene = paper_at(v0, zeta);
+        failed += !simulate(req).ok();
+      }
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() *
+        (200.0 * 50.0) / (nv * nz);
+    rep.targets.push_back(target(
+        "200 x 50 COR map at rtol 1e-8, one thread", 0.1, "s", secs,
+        std::string(options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "") +
+            "full model (elastoplastic, dop853; --model auto is not on this branch), " +
+            std::to_string(failed) +
+            " failed points (a failed point counts as a miss: the target asks for every point)"));
+    if (failed > 0) rep.targets.back().met = false;
+    rep.targets.push_back(target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio",
+                                 kNaN,
+                                 "not measured here: the threaded sweep is solver/sweep.* "
+                                 "(`ivv sweep --threads 2`)"));
+  }
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+  return rep;
+}
+
+namespace {
+nlohmann::json num(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+nlohmann::json point_json(const BenchPoint& p) {
+  nlohmann::json j = {{"integrator", p.integrator}, {"law", p.law},
+                      {"scene", p.scene},           {"rtol", p.rtol},
+                      {"err_e", num(p.err_e)},      {"err_F", num(p.err_F)},
+                      {"err_t", num(p.err_t)},      {"us_per_impact", num(p.us_per_impact)},
+                      {"rhs_evals", p.rhs_evals},   {"reference", p.reference}};
+  if (!p.ok) j["failed"] = p.reason;
+  return j;
+}
+}  // namespace
+
+std::string to_json(const BenchReport& r) {
+  nlohmann::json j;
+  j["machine"] = {{"cpu", r.machine.cpu_model},
+                  {"logical_cores", r.machine.logical_cores},
+                  {"compiler", r.machine.compiler},
+                  {"build_type", r.machine.build_type},
+                  {"threads_used", 1}};
+  j["points"] = nlohmann::json::array();
+  for (const auto& p : r.points) j["points"].push_back(point_json(p));
+  j["peers"] = nlohmann::json::array();
+  for (const auto& p : r.peers) j["peers"].push_back(point_json(p));
+  j["targets"] = nlohmann::json::array();
+  for (const auto& t : r.targets)
+    j["targets"].push_back({{"target", t.name},
+                            {"bound", t.bound},
+                            {"unit", t.unit},
+                            {"measured", num(t.measured)},
+                            {"status", std::isnan(t.measured) ? "not measured"
+                                       : t.met                ? "pass"
+                                                              : "miss"},
+                            {"ratio", num(t.ratio)},
+                            {"how", t.how}});
+  j["ratio_table"] = nlohmann::json::array();
+  for (const auto& row : ratio_table(r.points, r.peers)) {
+    nlohmann::json pj = nlohmann::json::object();
+    for (std::size_t i = 0; i < row.peer_us.size(); ++i)
+      pj[to_string(kPeers[i])] = {{"us_per_impact", num(row.peer_us[i])},
+                                  {"ratio", num(row.peer_ratio[i])}};
+    j["ratio_table"].push_back({{"err_e", row.level},
+                                {"ivv_us", num(row.ivv_us)},
+                                {"ivv_integrator", row.ivv_integrator},
+                                {"peers", pj}});
+  }
+  j["seconds"] = r.seconds;
+  return j.dump(1);
+}
+
+std::string to_text(const BenchReport& r) {
+  std::ostringstream os;
+  os << "machine: " << r.machine.cpu_model << ", " << r.machine.logical_cores << " cores, "
+     << r.machine.compiler << ", " << r.machine.build_type << "; one thread\n\n";
+  os << "error level   ivv best [us] (integrator)";
+  for (Peer p : kPeers) os << "   " << to_string(p) << " [us] (ratio)";
+  os << "\n";
+  for (const auto& row : ratio_table(r.points, r.peers)) {
+    os << std::setw(11) << row.level << "   " << std::setw(8) << std::setprecision(3) << row.ivv_us
+       << " (" << row.ivv_integrator << ")";
+    for (std::size_t i = 0; i < row.peer_us.size(); ++i)
+      os << "   " << std::setw(8) << row.peer_us[i] << " (x" << row.peer_ratio[i] << ")";
+    os << "\n";
+  }
+  os << "\ntargets (issue 8, part 5):\n";
+  for (const auto& t : r.targets) {
+    os << "  "
+       << (std::isnan(t.measured) ? "n/a "
+           : t.met                ? "pass"
+                                  : "MISS")
+       << "  " << t.name << ": target <= " << t.bound << " " << t.unit << ", measured "
+       << std::setprecision(3) << t.measured << " " << t.unit;
+    if (!std::isnan(t.ratio)) os << " (x" << t.ratio << " of the target)";
+    os << "\n        " << t.how << "\n";
+  }
+  os << "\n"
+     << r.points.size() << " points, " << r.peers.size() << " peer points in "
+     << std::setprecision(3) << r.seconds << " s (--json for every point)\n";
+  return os.str();
+}
+
+}  // namespace ivv::bench

@@ -1,0 +1,94 @@
+// `ivv bench`: speed against error for every integrator and law, with the peers measured in
+// the same run and the targets of issue 8 printed beside the measured figures.
+//
+// Scenes: the paper scene (Table 1) at v0 in {0.1, 1, 5} m/s and zeta in {0, 0.1}, and a stiff
+// scene (v0 = 1 m/s, zeta = 100: the dashpot time scale 1/(2 zeta) in tau is 200 times shorter
+// than the loading). Laws: hertz, elastoplastic, linearized (not at 0.1 m/s, where it is
+// undefined, nor on the stiff scene), hunt-crossley with mu v0 = 1 (no dashpot: on the zeta = 0
+// scenes only).
+// Integrators: every production integrator of the table on the paper scenes; on the stiff
+// scene the implicit ones and dop853 (the other explicit ones take milliseconds there for
+// nothing). Each point: rtol = atol = the swept tolerance (rk4: its fixed step dt in tau,
+// reported in the rtol field), errors of e, F_max, t_f relative to the reference, the median
+// wall-clock time per impact over repeated single-threaded runs, RHS evaluations.
+//
+// Reference: mp50 (the 50-digit integration; reference_tolerance 1e-26, or 1e-20 with --quick,
+// which still resolves errors >= 1e-16) on the paper scenes. On the stiff scene mp50 takes
+// minutes (its explicit steps are stability-limited), so the reference there is dop853 at
+// rtol = atol = 1e-13, whose stability-limited steps keep it far below its tolerance (it agrees
+// with odeint-rosenbrock4 at 1e-13 to ~5e-11 in F_max): stated in the JSON as reference.
+// The stiff scene is a capture (e = 0): err_e is then the absolute error of e.
+//
+// Timings are never pass/fail; quote ratios measured in one run, with `machine`.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench/peers.h"
+#include "bench/work_precision.h"
+
+namespace ivv::bench {
+
+struct BenchPoint {
+  std::string integrator, law, scene, reference;
+  double rtol = 0.0;  // rtol = atol; rk4: dt in tau
+  double err_e = 0.0, err_F = 0.0, err_t = 0.0;
+  double us_per_impact = 0.0;  // median [us]
+  long rhs_evals = 0;
+  bool ok = true;
+  std::string reason;
+};
+
+struct BenchTarget {
+  std::string name;    // what the target says
+  double bound = 0.0;  // the target [us] (or [s] for the map)
+  std::string unit;
+  double measured = 0.0;  // NaN when not measured
+  bool met = false;
+  double ratio = 0.0;  // measured / bound (> 1: missed by this factor)
+  std::string how;     // what was measured, and why a miss happens if it does
+};
+
+struct BenchOptions {
+  bool quick = false;
+};
+
+struct BenchReport {
+  MachineInfo machine;
+  std::vector<BenchPoint> points;
+  std::vector<BenchPoint> peers;  // integrator = the peer's name, law elastoplastic
+  std::vector<BenchTarget> targets;
+  double seconds = 0.0;  // wall clock of the whole run
+};
+
+// One row per error level of the ratio table: the fastest time reaching err_e <= level on the
+// paper scene (v0 = 1 m/s, zeta = 0.1, elastoplastic) for ivv (any integrator) and each peer.
+struct RatioRow {
+  double level = 0.0;
+  double ivv_us = 0.0;  // NaN when no point reaches the level
+  std::string ivv_integrator;
+  std::vector<double> peer_us;     // per kPeers entry, NaN when not reached
+  std::vector<double> peer_ratio;  // peer_us / ivv_us
+};
+std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
+                                  const std::vector<BenchPoint>& peers);
+
+// The paper scene's label in points ("paper v0=1 zeta=0.1").
+std::string scene_label(double v0, double zeta);
+
+// Peers on the paper scene (v0 = 1 m/s, zeta = 0.1) over `tols`, against `reference` (the mp50
+// run of the elastoplastic law on that scene).
+std::vector<BenchPoint> measure_peers(const std::vector<double>& tols,
+                                      const ImpactResult& reference, double min_seconds,
+                                      int min_repeats);
+
+// Runs everything; `progress` (may be empty) gets one line per stage.
+BenchReport run_bench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress);
+
+std::string to_json(const BenchReport& report);  // the shape of `ivv bench --json`
+std::string to_text(const BenchReport& report);  // the summary `ivv bench` prints
+
+}  // namespace ivv::bench

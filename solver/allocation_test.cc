@@ -1,0 +1,84 @@
+// Heap allocations per impact on the hot path (issue 8, part 1), counted by replacing the
+// global operator new in this test binary and running simulate() without a trajectory.
+//
+// The bound: an impact returns ImpactResult, whose `events` vector must own its storage, and
+// the driver keeps its own event list in normalised units (reserved once for every event an
+// impact can have); so a hand-written stepper costs exactly these two allocations per impact
+// and nothing per step or per right-hand-side evaluation. Library steppers are listed with
+// what their libraries allocate (GSL allocates its driver per impact; odeint's steppers on
+// std::array state allocate nothing).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "solver/simulate.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace ivv {
+namespace {
+
+long allocations_of_one_impact(IntegratorKind k, double zeta) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.velocity = 1.0;
+  req.scene.damping = zeta > 0 ? Damping::ratio(zeta) : Damping::none();
+  req.integrator = k;
+  const ImpactResult warm = simulate(req);  // first-call statics (tables, error handlers)
+  EXPECT_TRUE(warm.separated()) << warm.reason;
+  const long before = g_allocations.load();
+  const ImpactResult r = simulate(req);
+  const long n = g_allocations.load() - before;
+  EXPECT_TRUE(r.separated()) << r.reason;
+  return n;
+}
+
+// ImpactResult::events and the driver's own event list: two allocations, independent of the
+// number of steps (so none per step or per evaluation).
+constexpr long kPerImpact = 2;
+
+TEST(Allocations, HandWrittenSteppersAllocateOnlyTheEventLists) {
+  for (IntegratorKind k :
+       {IntegratorKind::dop853, IntegratorKind::dp45, IntegratorKind::rk4,
+        IntegratorKind::odeint_dopri5}) {
+    for (double zeta : {0.0, 0.1}) {
+      EXPECT_EQ(allocations_of_one_impact(k, zeta), kPerImpact)
+          << to_string(k) << " zeta = " << zeta;
+    }
+  }
+}
+
+TEST(Allocations, DoNotGrowWithTheNumberOfSteps) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.velocity = 1.0;
+  req.scene.damping = Damping::ratio(0.1);
+  req.integrator = IntegratorKind::dop853;
+  for (double rtol : {1e-6, 1e-13}) {
+    req.options.rtol = req.options.atol = rtol;
+    simulate(req);
+    const long before = g_allocations.load();
+    const ImpactResult r = simulate(req);
+    EXPECT_EQ(g_allocations.load() - before, kPerImpact) << "rtol " << rtol << ", " << r.steps
+                                                         << " steps";
+  }
+}
+
+}  // namespace
+}  // namespace ivv

@@ -1,0 +1,385 @@
+// Dormand-Prince 8(5,3) ("DOP853"): Hairer, Norsett & Wanner, Solving Ordinary Differential
+// Equations I (2nd ed., Springer 1993), §II.5 (the method, after Prince & Dormand, J. Comput.
+// Appl. Math. 7:67, 1981) and §II.6 (the dense output), written from the tableau; shares no code
+// with odeint or GSL.
+//
+// Coefficients: the constants of Hairer's Fortran code DOP853 (version of 2004, file dop853.f,
+// http://www.unige.ch/~hairer/software.html): nodes C2..C16, stages A(i,j), weights B(j), the
+// error weights BHH(j) and ER(j), the dense-output vectors D4j..D7j, as printed there to 30
+// significant digits (the same numbers scipy's dop853_coefficients.py reproduces). Indices here
+// count from 0: stage i of this file is stage i+1 of the book.
+//
+// The method: 12 stages give an eighth-order solution x1 = x0 + h sum_j b_j k_j (b_j = a[12][j]);
+// the 13th evaluation f(t0 + h, x1) is the first stage of the next step (FSAL). Error, as in
+// DOP853, from two embedded estimates of orders 5 and 3 (sk_i = atol + rtol max(|x0_i|, |x1_i|)):
+//   err5_i = h sum_j e5_j k_j,   err3_i = h sum_j (b_j - bhh_j) k_j
+//   ||err|| = sum_i (err5_i/sk_i)^2 / sqrt(n (sum_i (err5_i/sk_i)^2 + 0.01 sum_i (err3_i/sk_i)^2))
+// which behaves as h^8 for small h and is never smaller than the fifth-order estimate would say
+// where the third-order one is large. Accepted when ||err|| <= 1; next step
+// h clamp(0.9 ||err||^{-1/8}, 1/3, 6), no growth right after a rejection (Hairer's defaults).
+//
+// Dense output (order 7): three more stages (c = 0.1, 0.2, 7/9) computed only when an
+// interpolation is asked for on a step, then with theta = (t - t0)/h, s1 = 1 - theta:
+//   x(t0 + theta h) = x0 + theta (r1 + s1 (r2 + theta (r3 + s1 (r4 + theta (r5 + s1 (r6 +
+//                     theta r7))))))
+//   r1 = x1 - x0, r2 = h k0 - r1, r3 = r1 - h k12 - r2, r_{4+q} = h sum_j d[q][j] k_j.
+// With IntegratorOptions::fixed_step the error control is off and h = dt (convergence studies).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string_view>
+
+#include "solver/integrator_options.h"
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+namespace dop853_tableau {
+// nodes c_i (stage i at t0 + c_i h); stages 0-11 the method, 12 = f(t0 + h, x1) (FSAL),
+// 13-15 the extra stages of the dense output
+inline constexpr double c[16] = {
+    0.0,
+    0.526001519587677318785587544488e-01,
+    0.789002279381515978178381316732e-01,
+    0.118350341907227396726757197510,
+    0.281649658092772603273242802490,
+    0.333333333333333333333333333333,
+    0.25,
+    0.307692307692307692307692307692,
+    0.651282051282051282051282051282,
+    0.6,
+    0.857142857142857142857142857142,
+    1.0,
+    1.0,
+    0.1,
+    0.2,
+    0.777777777777777777777777777778,
+};
+// a[i][j]: stage i from stages j < i; row 12 holds the eighth-order weights b_j
+inline constexpr double a[16][16] = {
+    {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {5.26001519587677318785587544488e-2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {1.97250569845378994544595329183e-2, 5.91751709536136983633785987549e-2, 0, 0, 0, 0, 0, 0, 0, 0,
+     0, 0, 0, 0, 0, 0},
+    {2.95875854768068491816892993775e-2, 0, 8.87627564304205475450678981324e-2, 0, 0, 0, 0, 0, 0, 0,
+     0, 0, 0, 0, 0, 0},
+    {2.41365134159266685502369798665e-1, 0, -8.84549479328286085344864962717e-1,
+     9.24834003261792003115737966543e-1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {3.7037037037037037037037037037e-2, 0, 0, 1.70828608729473871279604482173e-1,
+     1.25467687566822425016691814123e-1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {3.7109375e-2, 0, 0, 1.70252211019544039314978060272e-1, 6.02165389804559606850219397283e-2,
+     -1.7578125e-2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {3.70920001185047927108779319836e-2, 0, 0, 1.70383925712239993810214054705e-1,
+     1.07262030446373284651809199168e-1, -1.53194377486244017527936158236e-2,
+     8.27378916381402288758473766002e-3, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {6.24110958716075717114429577812e-1, 0, 0, -3.36089262944694129406857109825,
+     -8.68219346841726006818189891453e-1, 2.75920996994467083049415600797e1,
+     2.01540675504778934086186788979e1, -4.34898841810699588477366255144e1, 0, 0, 0, 0, 0, 0, 0, 0},
+    {4.77662536438264365890433908527e-1, 0, 0, -2.48811461997166764192642586468,
+     -5.90290826836842996371446475743e-1, 2.12300514481811942347288949897e1,
+     1.52792336328824235832596922938e1, -3.32882109689848629194453265587e1,
+     -2.03312017085086261358222928593e-2, 0, 0, 0, 0, 0, 0, 0},
+    {-9.3714243008598732571704021658e-1, 0, 0, 5.18637242884406370830023853209,
+     1.09143734899672957818500254654, -8.14978701074692612513997267357,
+     -1.85200656599969598641566180701e1, 2.27394870993505042818970056734e1,
+     2.49360555267965238987089396762, -3.0467644718982195003823669022, 0, 0, 0, 0, 0, 0},
+    {2.27331014751653820792359768449, 0, 0, -1.05344954667372501984066689879e1,
+     -2.00087205822486249909675718444, -1.79589318631187989172765950534e1,
+     2.79488845294199600508499808837e1, -2.85899827713502369474065508674,
+     -8.87285693353062954433549289258, 1.23605671757943030647266201528e1,
+     6.43392746015763530355970484046e-1, 0, 0, 0, 0, 0},
+    {5.42937341165687622380535766363e-2, 0, 0, 0, 0, 4.45031289275240888144113950566,
+     1.89151789931450038304281599044, -5.8012039600105847814672114227,
+     3.1116436695781989440891606237e-1, -1.52160949662516078556178806805e-1,
+     2.01365400804030348374776537501e-1, 4.47106157277725905176885569043e-2, 0, 0, 0, 0},
+    {5.61675022830479523392909219681e-2, 0, 0, 0, 0, 0, 2.53500210216624811088794765333e-1,
+     -2.46239037470802489917441475441e-1, -1.24191423263816360469010140626e-1,
+     1.5329179827876569731206322685e-1, 8.20105229563468988491666602057e-3,
+     7.56789766054569976138603589584e-3, -8.298e-3, 0, 0, 0},
+    {3.18346481635021405060768473261e-2, 0, 0, 0, 0, 2.83009096723667755288322961402e-2,
+     5.35419883074385676223797384372e-2, -5.49237485713909884646569340306e-2, 0, 0,
+     -1.08347328697249322858509316994e-4, 3.82571090835658412954920192323e-4,
+     -3.40465008687404560802977114492e-4, 1.41312443674632500278074618366e-1, 0, 0},
+    {-4.28896301583791923408573538692e-1, 0, 0, 0, 0, -4.69762141536116384314449447206,
+     7.68342119606259904184240953878, 4.06898981839711007970213554331,
+     3.56727187455281109270669543021e-1, 0, 0, 0, -1.39902416515901462129418009734e-3,
+     2.9475147891527723389556272149, -9.15095847217987001081870187138, 0},
+};
+// bhh_j: the third-order weights enter the error estimate as b_j - bhh_j (Hairer's ERR2)
+inline constexpr double bhh[12] = {
+    0.244094488188976377952755905512,   0, 0, 0, 0, 0, 0, 0, 0.733846688281611857341361741547, 0, 0,
+    0.220588235294117647058823529412e-1};
+// e5_j: b_j minus the fifth-order weights (Hairer's ER1 ... ER12)
+inline constexpr double e5[12] = {0.1312004499419488073250102996e-1,
+                                  0,
+                                  0,
+                                  0,
+                                  0,
+                                  -0.1225156446376204440720569753e1,
+                                  -0.4957589496572501915214079952,
+                                  0.1664377182454986536961530415e1,
+                                  -0.3503288487499736816886487290,
+                                  0.3341791187130174790297318841,
+                                  0.8192320648511571246570742613e-1,
+                                  -0.2235530786388629525884427845e-1};
+// d[r][j]: the dense output's coefficient vectors r = 4 ... 7 (Hairer's D4j ... D7j)
+inline constexpr double d[4][16] = {
+    {-0.84289382761090128651353491142e1, 0, 0, 0, 0, 0.56671495351937776962531783590,
+     -0.30689499459498916912797304727e1, 0.23846676565120698287728149680e1,
+     0.21170345824450282767155149946e1, -0.87139158377797299206789907490,
+     0.22404374302607882758541771650e1, 0.63157877876946881815570249290,
+     -0.88990336451333310820698117400e-1, 0.18148505520854727256656404962e2,
+     -0.91946323924783554000451984436e1, -0.44360363875948939664310572000e1},
+    {0.10427508642579134603413151009e2, 0, 0, 0, 0, 0.24228349177525818288430175319e3,
+     0.16520045171727028198505394887e3, -0.37454675472269020279518312152e3,
+     -0.22113666853125306036270938578e2, 0.77334326684722638389603898808e1,
+     -0.30674084731089398182061213626e2, -0.93321305264302278729567221706e1,
+     0.15697238121770843886131091075e2, -0.31139403219565177677282850411e2,
+     -0.93529243588444783865713862664e1, 0.35816841486394083752465898540e2},
+    {0.19985053242002433820987653617e2, 0, 0, 0, 0, -0.38703730874935176555105901742e3,
+     -0.18917813819516756882830838328e3, 0.52780815920542364900561016686e3,
+     -0.11573902539959630126141871134e2, 0.68812326946963000169666922661e1,
+     -0.10006050966910838403183860980e1, 0.77771377980534432092869265740,
+     -0.27782057523535084065932004339e1, -0.60196695231264120758267380846e2,
+     0.84320405506677161018159903784e2, 0.11992291136182789328035130030e2},
+    {-0.25693933462703749003312586129e2, 0, 0, 0, 0, -0.15418974869023643374053993627e3,
+     -0.23152937917604549567536039109e3, 0.35763911791061412378285349910e3,
+     0.93405324183624310003907691704e2, -0.37458323136451633156875139351e2,
+     0.10409964950896230045147246184e3, 0.29840293426660503123344363579e2,
+     -0.43533456590011143754432175058e2, 0.96324553959188282948394950600e2,
+     -0.39177261675615439165231486172e2, -0.14972683625798562581422125276e3},
+};
+}  // namespace dop853_tableau
+
+template <class System>
+class Dop853Stepper {
+ public:
+  using state_type = typename System::state_type;
+  using T = typename System::value_type;
+  static constexpr std::string_view name = "dop853";
+  static constexpr bool dense_output = true;
+  static constexpr int order = 8;
+  static constexpr bool implicit = false;
+  static constexpr bool fixed_step = false;  // adaptive; IntegratorOptions::fixed_step turns it off
+  static constexpr bool fixed_step_mode = true;
+  static constexpr bool reference = false;
+  static constexpr std::string_view description =
+      "hand-written Dormand-Prince 8(5,3) (DOP853) from Hairer's tableau, 7th-order dense output: "
+      "the 1e-8 to 1e-13 range";
+
+  explicit Dop853Stepper(const IntegratorOptions& opt)
+      : rtol_(opt.rtol),
+        atol_(opt.atol),
+        fixed_(opt.fixed_step),
+        h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
+
+  void start(const System& sys, T t, const state_type& x) {
+    t1_ = t;
+    x1_ = x;
+    sys(x1_, k_[12], t1_);
+    dense_ready_ = false;
+  }
+
+  StepResult step(const System& sys) {
+    using namespace dop853_tableau;
+    constexpr std::size_t N = std::tuple_size_v<state_type>;
+    t0_ = t1_;
+    x0_ = x1_;
+    k_[0] = k_[12];
+    dense_ready_ = false;
+    bool rejected = false;
+    state_type tmp;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      const T h = h_;
+      // stage 1
+      for (std::size_t m = 0; m < N; ++m) tmp[m] = x0_[m] + h * (a[1][0] * k_[0][m]);
+      sys(tmp, k_[1], t0_ + c[1] * h);
+      // stage 2
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[2][0] * k_[0][m] + a[2][1] * k_[1][m]);
+      sys(tmp, k_[2], t0_ + c[2] * h);
+      // stage 3
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[3][0] * k_[0][m] + a[3][2] * k_[2][m]);
+      sys(tmp, k_[3], t0_ + c[3] * h);
+      // stage 4
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[4][0] * k_[0][m] + a[4][2] * k_[2][m] + a[4][3] * k_[3][m]);
+      sys(tmp, k_[4], t0_ + c[4] * h);
+      // stage 5
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[5][0] * k_[0][m] + a[5][3] * k_[3][m] + a[5][4] * k_[4][m]);
+      sys(tmp, k_[5], t0_ + c[5] * h);
+      // stage 6
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[6][0] * k_[0][m] + a[6][3] * k_[3][m] + a[6][4] * k_[4][m] +
+                               a[6][5] * k_[5][m]);
+      sys(tmp, k_[6], t0_ + c[6] * h);
+      // stage 7
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[7][0] * k_[0][m] + a[7][3] * k_[3][m] + a[7][4] * k_[4][m] +
+                               a[7][5] * k_[5][m] + a[7][6] * k_[6][m]);
+      sys(tmp, k_[7], t0_ + c[7] * h);
+      // stage 8
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[8][0] * k_[0][m] + a[8][3] * k_[3][m] + a[8][4] * k_[4][m] +
+                               a[8][5] * k_[5][m] + a[8][6] * k_[6][m] + a[8][7] * k_[7][m]);
+      sys(tmp, k_[8], t0_ + c[8] * h);
+      // stage 9
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[9][0] * k_[0][m] + a[9][3] * k_[3][m] + a[9][4] * k_[4][m] +
+                               a[9][5] * k_[5][m] + a[9][6] * k_[6][m] + a[9][7] * k_[7][m] +
+                               a[9][8] * k_[8][m]);
+      sys(tmp, k_[9], t0_ + c[9] * h);
+      // stage 10
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[10][0] * k_[0][m] + a[10][3] * k_[3][m] + a[10][4] * k_[4][m] +
+                               a[10][5] * k_[5][m] + a[10][6] * k_[6][m] + a[10][7] * k_[7][m] +
+                               a[10][8] * k_[8][m] + a[10][9] * k_[9][m]);
+      sys(tmp, k_[10], t0_ + c[10] * h);
+      // stage 11
+      for (std::size_t m = 0; m < N; ++m)
+        tmp[m] = x0_[m] + h * (a[11][0] * k_[0][m] + a[11][3] * k_[3][m] + a[11][4] * k_[4][m] +
+                               a[11][5] * k_[5][m] + a[11][6] * k_[6][m] + a[11][7] * k_[7][m] +
+                               a[11][8] * k_[8][m] + a[11][9] * k_[9][m] + a[11][10] * k_[10][m]);
+      sys(tmp, k_[11], t0_ + c[11] * h);
+      for (std::size_t m = 0; m < N; ++m)
+        x1_[m] = x0_[m] + h * (a[12][0] * k_[0][m] + a[12][5] * k_[5][m] + a[12][6] * k_[6][m] +
+                               a[12][7] * k_[7][m] + a[12][8] * k_[8][m] + a[12][9] * k_[9][m] +
+                               a[12][10] * k_[10][m] + a[12][11] * k_[11][m]);
+      sys(x1_, k_[12], t0_ + h);
+      if (fixed_) return accept(h, h);
+      T sum5 = 0, sum3 = 0;
+      for (std::size_t m = 0; m < N; ++m) {
+        using std::abs;
+        using std::max;
+        const T sk = atol_ + rtol_ * max(abs(x0_[m]), abs(x1_[m]));
+        const T e5m =
+            (e5[0] * k_[0][m] + e5[5] * k_[5][m] + e5[6] * k_[6][m] + e5[7] * k_[7][m] +
+             e5[8] * k_[8][m] + e5[9] * k_[9][m] + e5[10] * k_[10][m] + e5[11] * k_[11][m]) /
+            sk;
+        const T e3m = ((a[12][0] - bhh[0]) * k_[0][m] + a[12][5] * k_[5][m] + a[12][6] * k_[6][m] +
+                       a[12][7] * k_[7][m] + (a[12][8] - bhh[8]) * k_[8][m] + a[12][9] * k_[9][m] +
+                       a[12][10] * k_[10][m] + (a[12][11] - bhh[11]) * k_[11][m]) /
+                      sk;
+        sum5 += e5m * e5m;
+        sum3 += e3m * e3m;
+      }
+      using std::sqrt;
+      T deno = sum5 + T(0.01) * sum3;
+      if (deno <= 0) deno = 1;
+      const T norm = (h < 0 ? -h : h) * sum5 / sqrt(T(N) * deno);
+      if (!(norm == norm)) {  // NaN: the state left the law's domain
+        h_ = h * T(0.2);
+        rejected = true;
+        continue;
+      }
+      // 0.9 norm^{-1/8} by three square roots (no pow on the hot path)
+      const T factor =
+          norm == 0 ? T(6) : std::clamp(T(0.9) / sqrt(sqrt(sqrt(norm))), T(1.0 / 3), T(6));
+      if (norm <= 1) return accept(h, rejected ? std::min(h, h * factor) : h * factor);
+      rejected = true;
+      h_ = h * factor;
+      if (h_ <= 1e-14 * (1 + (t0_ < 0 ? -t0_ : t0_))) break;
+    }
+    std::ostringstream os;
+    os << "dop853: step size underflow at tau = " << static_cast<double>(t0_)
+       << " (cannot meet rtol = " << static_cast<double>(rtol_) << ")";
+    return StepResult::failure(os.str());
+  }
+
+  void interpolate(const System& sys, T t, state_type& out) const {
+    if (!dense_ready_) prepare_dense(sys);
+    const T th = (t - t0_) / (t1_ - t0_);
+    const T s1 = 1 - th;
+    for (std::size_t m = 0; m < out.size(); ++m)
+      out[m] =
+          x0_[m] +
+          th * (r_[0][m] +
+                s1 * (r_[1][m] +
+                      th * (r_[2][m] +
+                            s1 * (r_[3][m] + th * (r_[4][m] + s1 * (r_[5][m] + th * r_[6][m]))))));
+  }
+
+  T t0() const { return t0_; }
+  T t1() const { return t1_; }
+  const state_type& x0() const { return x0_; }
+  const state_type& x1() const { return x1_; }
+  long steps() const { return steps_; }
+
+ private:
+  StepResult accept(T h, T next) {
+    t1_ = t0_ + h;
+    if (!fixed_) h_ = next;
+    ++steps_;
+    return StepResult::success();
+  }
+
+  // The three extra stages and the coefficient vectors r of the continuous extension, once per
+  // step and only for steps that are interpolated (most steps of an impact are not).
+  void prepare_dense(const System& sys) const {
+    using namespace dop853_tableau;
+    constexpr std::size_t N = std::tuple_size_v<state_type>;
+    const T h = t1_ - t0_;
+    state_type tmp;
+    // stage 13
+    for (std::size_t m = 0; m < N; ++m)
+      tmp[m] = x0_[m] + h * (a[13][0] * k_[0][m] + a[13][6] * k_[6][m] + a[13][7] * k_[7][m] +
+                             a[13][8] * k_[8][m] + a[13][9] * k_[9][m] + a[13][10] * k_[10][m] +
+                             a[13][11] * k_[11][m] + a[13][12] * k_[12][m]);
+    sys(tmp, k_[13], t0_ + c[13] * h);
+    // stage 14
+    for (std::size_t m = 0; m < N; ++m)
+      tmp[m] = x0_[m] + h * (a[14][0] * k_[0][m] + a[14][5] * k_[5][m] + a[14][6] * k_[6][m] +
+                             a[14][7] * k_[7][m] + a[14][10] * k_[10][m] + a[14][11] * k_[11][m] +
+                             a[14][12] * k_[12][m] + a[14][13] * k_[13][m]);
+    sys(tmp, k_[14], t0_ + c[14] * h);
+    // stage 15
+    for (std::size_t m = 0; m < N; ++m)
+      tmp[m] = x0_[m] + h * (a[15][0] * k_[0][m] + a[15][5] * k_[5][m] + a[15][6] * k_[6][m] +
+                             a[15][7] * k_[7][m] + a[15][8] * k_[8][m] + a[15][12] * k_[12][m] +
+                             a[15][13] * k_[13][m] + a[15][14] * k_[14][m]);
+    sys(tmp, k_[15], t0_ + c[15] * h);
+    for (std::size_t m = 0; m < N; ++m) {
+      const T dx = x1_[m] - x0_[m];
+      const T bspl = h * k_[0][m] - dx;
+      r_[0][m] = dx;
+      r_[1][m] = bspl;
+      r_[2][m] = dx - h * k_[12][m] - bspl;
+      r_[3][m] = h * (d[0][0] * k_[0][m] + d[0][5] * k_[5][m] + d[0][6] * k_[6][m] +
+                      d[0][7] * k_[7][m] + d[0][8] * k_[8][m] + d[0][9] * k_[9][m] +
+                      d[0][10] * k_[10][m] + d[0][11] * k_[11][m] + d[0][12] * k_[12][m] +
+                      d[0][13] * k_[13][m] + d[0][14] * k_[14][m] + d[0][15] * k_[15][m]);
+      r_[4][m] = h * (d[1][0] * k_[0][m] + d[1][5] * k_[5][m] + d[1][6] * k_[6][m] +
+                      d[1][7] * k_[7][m] + d[1][8] * k_[8][m] + d[1][9] * k_[9][m] +
+                      d[1][10] * k_[10][m] + d[1][11] * k_[11][m] + d[1][12] * k_[12][m] +
+                      d[1][13] * k_[13][m] + d[1][14] * k_[14][m] + d[1][15] * k_[15][m]);
+      r_[5][m] = h * (d[2][0] * k_[0][m] + d[2][5] * k_[5][m] + d[2][6] * k_[6][m] +
+                      d[2][7] * k_[7][m] + d[2][8] * k_[8][m] + d[2][9] * k_[9][m] +
+                      d[2][10] * k_[10][m] + d[2][11] * k_[11][m] + d[2][12] * k_[12][m] +
+                      d[2][13] * k_[13][m] + d[2][14] * k_[14][m] + d[2][15] * k_[15][m]);
+      r_[6][m] = h * (d[3][0] * k_[0][m] + d[3][5] * k_[5][m] + d[3][6] * k_[6][m] +
+                      d[3][7] * k_[7][m] + d[3][8] * k_[8][m] + d[3][9] * k_[9][m] +
+                      d[3][10] * k_[10][m] + d[3][11] * k_[11][m] + d[3][12] * k_[12][m] +
+                      d[3][13] * k_[13][m] + d[3][14] * k_[14][m] + d[3][15] * k_[15][m]);
+    }
+    dense_ready_ = true;
+  }
+
+  T rtol_, atol_;
+  bool fixed_;
+  T h_;
+  T t0_{}, t1_{};
+  state_type x0_{}, x1_{};
+  // k_[0..11] the stages, k_[12] = f(t1, x1), k_[13..15] the dense output's extra stages
+  mutable std::array<state_type, 16> k_{};
+  mutable std::array<state_type, 7> r_{};
+  mutable bool dense_ready_ = false;
+  long steps_ = 0;
+};
+
+}  // namespace ivv
