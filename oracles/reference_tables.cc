@@ -10,6 +10,7 @@
 #include <exception>
 #include <fstream>
 #include <string_view>
+#include <system_error>
 
 namespace ivv::oracles {
 
@@ -42,10 +43,14 @@ std::vector<Row> read_table(const std::filesystem::path& file, ReadRow read_row,
 }  // namespace
 
 std::filesystem::path reference_data_dir() {
-  if (const char* env = std::getenv("IVV_REFERENCE_DATA"); env != nullptr && *env != '\0') {
-    return env;
+  std::string searched;
+  for (const auto& dir : data_directories()) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(dir, ec)) return dir;
+    searched += (searched.empty() ? "" : ", ") + dir.string();
   }
-  return IVV_REFERENCE_DATA_DIR;
+  throw ReferenceTableError("reference data: no data directory found (searched " + searched +
+                            "; set IVV_DATA_DIR to the directory holding thornton_1997.csv)");
 }
 
 std::vector<ThorntonRow> read_thornton_table(const std::filesystem::path& file) {

@@ -4,14 +4,17 @@
 // io::CSVReader). A missing or extra column, a malformed number or a short row throws
 // ReferenceTableError whose message names the file, the line and the column.
 //
-// The directory is the environment variable IVV_REFERENCE_DATA when set and non-empty,
-// otherwise the compile-time IVV_REFERENCE_DATA_DIR (the source tree's reference_data/).
+// reference_data_dir() is the first of ivv::data_directories() (solver/data_dir.h: $IVV_DATA_DIR,
+// an installed package's share/ivv, <exe>/../share/ivv) that exists; ReferenceTableError naming
+// the places searched when none does.
 #pragma once
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "solver/data_dir.h"
 
 namespace ivv::oracles {
 

@@ -96,14 +96,54 @@ TEST_F(MalformedTable, MissingColumnAndShortRowAndMissingFile) {
   EXPECT_THROW(read_thornton_table("/nonexistent/ivv/table.csv"), ReferenceTableError);
 }
 
-TEST(ReferenceDataDir, EnvironmentOverridesTheCompiledDefault) {
-  const char* saved = std::getenv("IVV_REFERENCE_DATA");
-  const std::string saved_value = saved ? saved : "";
-  ::setenv("IVV_REFERENCE_DATA", "/some/where", 1);
-  EXPECT_EQ(reference_data_dir(), std::filesystem::path("/some/where"));
-  ::unsetenv("IVV_REFERENCE_DATA");
-  EXPECT_EQ(reference_data_dir(), std::filesystem::path(IVV_REFERENCE_DATA_DIR));
-  if (saved) ::setenv("IVV_REFERENCE_DATA", saved_value.c_str(), 1);
+// Restores $IVV_DATA_DIR when a test ends.
+class ReferenceDataDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const char* saved = std::getenv("IVV_DATA_DIR");
+    had_value_ = saved != nullptr;
+    if (had_value_) saved_ = saved;
+    ::unsetenv("IVV_DATA_DIR");
+  }
+  void TearDown() override {
+    if (had_value_)
+      ::setenv("IVV_DATA_DIR", saved_.c_str(), 1);
+    else
+      ::unsetenv("IVV_DATA_DIR");
+  }
+  bool had_value_ = false;
+  std::string saved_;
+};
+
+// The test binary lives in <build>/oracles/, so <exe>/../share/ivv is the build tree's link to
+// reference_data/: found without a source path compiled in.
+TEST_F(ReferenceDataDir, BuildTreeIsFoundBesideTheExecutable) {
+  const auto dir = reference_data_dir();
+  EXPECT_EQ(dir.filename(), "ivv");
+  EXPECT_EQ(dir.parent_path().filename(), "share");
+  EXPECT_TRUE(std::filesystem::exists(dir / "thornton_1997.csv")) << dir;
+  EXPECT_TRUE(std::filesystem::exists(dir / "scenes" / "paper-damped.toml")) << dir;
+}
+
+TEST_F(ReferenceDataDir, EnvironmentComesFirstWhenItExists) {
+  const auto tmp = std::filesystem::temp_directory_path() / "ivv_data_dir_test";
+  std::filesystem::create_directories(tmp);
+  ::setenv("IVV_DATA_DIR", tmp.c_str(), 1);
+  EXPECT_EQ(reference_data_dir(), tmp);
+  EXPECT_EQ(data_directories().front(), tmp);
+  ::setenv("IVV_DATA_DIR", "/nonexistent/ivv/data", 1);  // skipped: falls back to the build tree
+  EXPECT_TRUE(std::filesystem::exists(reference_data_dir() / "thornton_1997.csv"));
+}
+
+TEST_F(ReferenceDataDir, AddedDirectoryComesAfterTheEnvironmentBeforeTheExecutable) {
+  add_data_directory("/opt/ivv-test/share/ivv");
+  add_data_directory("/opt/ivv-test/share/ivv");  // once only
+  ::setenv("IVV_DATA_DIR", "/env/dir", 1);
+  const auto dirs = data_directories();
+  ASSERT_EQ(dirs.size(), 3u);
+  EXPECT_EQ(dirs[0], std::filesystem::path("/env/dir"));
+  EXPECT_EQ(dirs[1], std::filesystem::path("/opt/ivv-test/share/ivv"));
+  EXPECT_EQ(dirs[2].filename(), "ivv");
 }
 
 }  // namespace

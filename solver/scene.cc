@@ -357,18 +357,6 @@ std::string read_scene_text(const std::filesystem::path& path) {
   return text;
 }
 
-std::vector<std::filesystem::path> data_directories() {
-  std::vector<std::filesystem::path> dirs;
-  if (const char* env = std::getenv("IVV_DATA_DIR"); env && *env) dirs.emplace_back(env);
-#ifdef IVV_SOURCE_DATA_DIR
-  dirs.emplace_back(IVV_SOURCE_DATA_DIR);
-#endif
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share" / "ivv");
-  return dirs;
-}
-
 Scene load_scene(const std::string& name_or_path) {
   if (name_or_path == "paper") return paper_scene();
   const bool bare_name = name_or_path.find('/') == std::string::npos &&

@@ -37,6 +37,8 @@
 #include <string>
 #include <vector>
 
+#include "solver/data_dir.h"
+
 namespace ivv {
 
 // The dashpot of the scene: absent (c = inf), given as a damping ratio, or as a coefficient.
@@ -154,12 +156,9 @@ Scene load_scene_file(const std::filesystem::path& path);
 std::string read_scene_text(const std::filesystem::path& path);
 Scene parse_scene_toml(const std::string& text, const std::string& source_name);
 
-// Directories searched for shipped data (each holding scenes/NAME.toml), in order:
-// $IVV_DATA_DIR, the source tree's reference_data/ (compiled in), <exe>/../share/ivv.
-std::vector<std::filesystem::path> data_directories();
-
 // "paper" names the built-in scene; an existing file path is read; otherwise a bare name
-// (no '/' and no ".toml") is looked up as scenes/NAME.toml in data_directories(), e.g.
+// (no '/' and no ".toml") is looked up as scenes/NAME.toml in data_directories()
+// (solver/data_dir.h: $IVV_DATA_DIR, an installed package's share/ivv, <exe>/../share/ivv), e.g.
 // "chung-ooi-2-aluminium".
 Scene load_scene(const std::string& name_or_path);
 

@@ -223,7 +223,7 @@ TEST(SceneParser, PaperIsBuiltIn) {
   EXPECT_EQ(load_scene("paper").name, "paper");
 }
 
-// Shipped scenes are found by name through data_directories() (the source tree here).
+// Shipped scenes are found by name through data_directories() (<build>/share/ivv here).
 TEST(SceneParser, ShippedSceneByName) {
   const Scene s = load_scene("chung-ooi-2-aluminium");
   EXPECT_EQ(s.name, "chung-ooi-2-aluminium");

@@ -1,6 +1,6 @@
 // The conformance checks as a GoogleTest suite, for a downstream project's own law:
 //
-//   #include <ivv/verification/conformance_gtest.h>   // (installed path; in-tree without ivv/)
+//   #include "verification/conformance_gtest.h"   // in the tree and installed alike
 //   ivv::conformance::testing::Subject my_law_subject() {
 //     return {ivv::conformance::law_under_test<MyLaw>("my-law", "F = ...",
 //                                                      [](const ivv::Scene& s) { ... }),
