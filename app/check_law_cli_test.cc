@@ -1,8 +1,10 @@
 // `ivv check-law` and the expression-law flags of `ivv simulate`, as a contact-law author
 // meets them: verdicts and exit codes, the JSON contract, errors with a caret, the report.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
+#include "app/cli_run.h"
 
 #include <array>
 #include <cstdio>
@@ -15,25 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string out, err;
-};
-
-CliRun ivv(const std::string& args) {
-  const fs::path err_file =
-      fs::temp_directory_path() / ("ivv_check_law_test_" + std::to_string(getpid()));
-  const std::string cmd = std::string(IVV_BINARY) + " " + args + " 2>" + err_file.string();
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  std::ifstream in(err_file);
-  std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  fs::remove(err_file);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err};
-}
+using ivv::testing::CliRun;
+using ivv::testing::ivv;
 
 TEST(CheckLaw, HertzExpressionPassesOnThePaperScene) {
   const CliRun r = ivv("check-law --force 'K_h*z^1.5' --scene paper");

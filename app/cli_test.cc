@@ -1,6 +1,8 @@
 // The command line as a user meets it: exit codes, the JSON contract, files, bad input.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
+#include "app/cli_run.h"
 
 #include <array>
 #include <cmath>
@@ -15,26 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-CliRun ivv(const std::string& args) {
-  const fs::path err_file =
-      fs::temp_directory_path() / ("ivv_cli_test_" + std::to_string(getpid()));
-  const std::string cmd = std::string(IVV_BINARY) + " " + args + " 2>" + err_file.string();
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  std::ifstream in(err_file);
-  std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  fs::remove(err_file);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err};
-}
+using ivv::testing::CliRun;
+using ivv::testing::ivv;
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("ivv_cli_" + std::to_string(getpid()));
