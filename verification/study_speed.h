@@ -1,0 +1,51 @@
+// Studies behind the report's speed-against-error section (see verification/study.h), the
+// parts of it that are measurements rather than timings:
+//
+//   * fixed_step_convergence_study(): the error of e of rk4 and dp45 (error control off) against
+//     the fixed step, with events located on the interpolant and noticed only at step ends
+//     (bench::measure_convergence), on the linearized law, Table 1 scene, v0 = 1 m/s,
+//     zeta = 0.1, against its closed form (paper eqs 22-25). Steps in normalised time tau:
+//     rk4 0.2 ... 0.00625, dp45 0.1 ... 0.0125 (the coarsest already asymptotic, the finest
+//     above round-off). Judged by convergence.rk4.events-at-step-ends and
+//     convergence.dp45.events-at-step-ends.
+//   * hard_case_study(): every double-precision integrator at its defaults (rtol = atol =
+//     1e-10; rk4 dt = 1e-3 in tau) on the hard scenes of SPEC §6 (a stiff dashpot, a grazing and
+//     a fast impact, a capture, Hunt-Crossley with mu v0 = 5), with an independent e where one
+//     exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of each
+//     run is recorded as information only: it is measured while other cases may run on other
+//     threads, and nothing is ever judged on it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bench/work_precision.h"
+#include "solver/simulate.h"
+
+namespace ivv::verification {
+
+struct FixedStepConvergenceStudy {
+  SimulationRequest base;  // linearized law, Table 1 scene, 1 m/s, zeta = 0.1
+  // rk4 located, rk4 at step ends, dp45 located, dp45 at step ends
+  std::vector<bench::ConvergenceStudy> runs;
+  // The run of integrator `k` (rk4 or dp45) with or without event location.
+  const bench::ConvergenceStudy& of(IntegratorKind k, bool events_located) const;
+};
+const FixedStepConvergenceStudy& fixed_step_convergence_study();
+
+struct HardCaseCell {
+  IntegratorKind integrator = IntegratorKind::odeint_dopri5;
+  ImpactResult result;
+  double seconds = 0.0;  // wall clock of the one run [s]: information only
+};
+
+struct HardCaseRow {
+  std::string name;              // e.g. "stiff dashpot"
+  std::string description;       // plain text: the scene and what makes it hard
+  double reference_e = 0.0;      // an independent value of e (NaN: none in closed form)
+  std::string reference_source;  // where reference_e comes from
+  std::vector<HardCaseCell> cells;  // one per production integrator
+};
+const std::vector<HardCaseRow>& hard_case_study();
+
+}  // namespace ivv::verification
