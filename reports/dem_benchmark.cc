@@ -2,9 +2,8 @@
 
 #include <map>
 
-#include "oracles/hertz.h"
 #include "reports/html.h"
-#include "solver/simulate.h"
+#include "solver/integrators.h"
 #include "verification/cases.h"
 
 namespace ivv::reports {
@@ -23,10 +22,11 @@ std::string dem_benchmark_html(const std::vector<verification::CaseRecord>& reco
       "v<sub>0</sub>, e = 1), not numbers read from the paper; see "
       "<code>reference_data/chung_ooi_2011.md</code>.</p>\n";
   std::vector<std::vector<std::string>> rows;
-  for (const auto& t : verification::chung_ooi_scenes()) {
-    const Scene s = load_scene(std::string(t.scene));
-    const DerivedParameters p = derive(s);
-    const auto x = oracles::solve_hertz(p.effective_mass, p.K_h, s.velocity);
+  for (const auto& ref : verification::chung_ooi_references()) {
+    const auto& t = ref.benchmark;
+    const Scene& s = ref.scene;
+    const DerivedParameters& p = ref.derived;
+    const oracles::HertzImpact& x = ref.closed_form;
     rows.push_back({"<code>" + escape(t.scene) + "</code>", escape(t.test), escape(t.what),
                     number(p.effective_radius, 4), number(p.effective_mass, 6),
                     number(p.E_star / 1e9, 5), number(s.velocity, 4), number(x.z_max * 1e3, 6),
@@ -34,7 +34,7 @@ std::string dem_benchmark_html(const std::vector<verification::CaseRecord>& reco
   }
   out += table({"scene", "test", "what", "R* [m]", "m* [kg]", "E* [GPa]", "v<sub>0</sub> [m/s]",
                 "z<sub>m</sub> [mm]", "F<sub>max</sub> [kN]", "t<sub>f</sub> [µs]"},
-               rows);
+               rows, Source::from_cases({"dem.chung-ooi-1-*", "dem.chung-ooi-2-*"}));
 
   // cases dem.<scene>.<integrator> that were run, by scene then integrator
   std::map<std::string, std::map<std::string, const verification::CaseRecord*>> run;
@@ -71,7 +71,7 @@ std::string dem_benchmark_html(const std::vector<verification::CaseRecord>& reco
       "v<sub>0</sub>), against each integrator's default-settings tolerance (1e-7; mp50 1e-12; "
       "reasons in section 4). The runs are normalised with the Hertz scales of each scene, so "
       "the same integrator makes the same normalised error in all four.</p>\n";
-  out += table(header, rows);
+  out += table(header, rows, Source::rows_are_cases());
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "reports/html.h"
 #include "verification/plot_data.h"
 
 namespace ivv::reports {
@@ -14,6 +15,7 @@ struct Figure {
   verification::Plot plot;  // plot.id is unique within the report
   std::string caption;      // HTML (escaped by the producer); says what is drawn and with what
   bool full_width = false;  // alone on its row (otherwise two figures share a row)
+  Source source;  // the case(s) whose measurements are drawn, or the illustration/timing label
 };
 
 struct SectionOptions {

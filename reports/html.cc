@@ -65,9 +65,72 @@ std::string slug(std::string_view text) {
   return out;
 }
 
+namespace {
+std::string_view kind_name(Source::Kind k) {
+  switch (k) {
+    case Source::Kind::cases:
+      return "cases";
+    case Source::Kind::case_rows:
+      return "case-rows";
+    case Source::Kind::illustration:
+      return "illustration";
+    case Source::Kind::timing:
+      return "timing";
+    case Source::Kind::unstated:
+      break;
+  }
+  return "unstated";
+}
+
+std::string case_list(const std::vector<std::string>& ids) {
+  std::string out;
+  for (const auto& id : ids) {
+    out += out.empty() ? "" : ", ";
+    const bool glob = id.find_first_of("*?") != std::string::npos;
+    out += glob ? "<code>" + escape(id) + "</code>"
+                : "<a href=\"#case-" + slug(id) + "\"><code>" + escape(id) + "</code></a>";
+  }
+  return out;
+}
+}  // namespace
+
+std::string source_attribute(const Source& source) {
+  std::string value(kind_name(source.kind));
+  for (std::size_t i = 0; i < source.cases.size(); ++i)
+    value += (i == 0 ? ":" : " ") + source.cases[i];
+  return " data-source=\"" + escape(value) + "\"";
+}
+
+std::string source_label(const Source& source) {
+  const std::string ids = case_list(source.cases);
+  switch (source.kind) {
+    case Source::Kind::cases:
+      return "<span class=\"source\">From " +
+             std::string(source.cases.size() == 1 ? "case " : "cases ") + ids + ".</span>";
+    case Source::Kind::case_rows:
+      return "";
+    case Source::Kind::illustration:
+      return "<span class=\"source illustration\">Illustration</span>" +
+             (ids.empty() ? std::string(".") : " (related cases: " + ids + ").");
+    case Source::Kind::timing:
+      return "<span class=\"source timing\">Timing, information only</span>" +
+             (ids.empty() ? std::string(".") : " (related cases: " + ids + ").");
+    case Source::Kind::unstated:
+      break;
+  }
+  return "";
+}
+
+std::string table_open(const Source& source, std::string_view css_class) {
+  const std::string label = source_label(source);
+  return (label.empty() ? std::string() : "<p class=\"source\">" + label + "</p>\n") +
+         "<table class=\"" + std::string(css_class) + "\"" + source_attribute(source) + ">\n";
+}
+
 std::string table(const std::vector<std::string>& header,
-                  const std::vector<std::vector<std::string>>& rows, std::string_view css_class) {
-  std::string out = "<table class=\"" + std::string(css_class) + "\">\n<thead><tr>";
+                  const std::vector<std::vector<std::string>>& rows, const Source& source,
+                  std::string_view css_class) {
+  std::string out = table_open(source, css_class) + "<thead><tr>";
   for (const auto& h : header) out += "<th>" + h + "</th>";
   out += "</tr></thead>\n<tbody>\n";
   for (const auto& row : rows) {
@@ -125,6 +188,10 @@ details.case figure svg { max-width: 640px; }
 figcaption { font-size: .9rem; color: var(--fg); margin-top: .4rem; }
 figcaption b.ftitle { display: block; }
 .plot-error { border: 2px solid var(--fail); color: var(--fail); padding: .6rem; }
+p.source { font-size: .85rem; margin: .6rem 0 .2rem; color: var(--muted); }
+span.source { font-size: .85rem; color: var(--muted); }
+span.source.illustration, span.source.timing { font-weight: 600; color: #8250df;
+         border: 1px solid #8250df; border-radius: 4px; padding: 0 .3rem; }
 .grid2 { display: grid; grid-template-columns: repeat(auto-fit, minmax(480px, 1fr));
          gap: 0 1rem; }
 details.case { margin: .2rem 0; }

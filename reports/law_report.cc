@@ -12,7 +12,8 @@ namespace ivv::reports {
 namespace fs = std::filesystem;
 
 std::string law_section_html(const conformance::Report& report, const std::string& anchor,
-                             const std::string& intro_html, const PlacePlot& place) {
+                             const std::string& intro_html, const PlacePlot& place,
+                             const Source& table_source) {
   std::string html =
       "<section id=\"" + slug(anchor) + "\">\n<h3>" + escape(report.law) + " — " +
       (report.passed() ? "<span class=\"pass\">PASS</span>" : "<span class=\"fail\">FAIL</span>") +
@@ -25,8 +26,8 @@ std::string law_section_html(const conformance::Report& report, const std::strin
          number_html(c.measured), number_html(c.reference), number_html(c.tolerance),
          escape(c.detail) + "<br><small>why this tolerance: " + escape(c.why) + "</small>"});
   }
-  html +=
-      table({"check", "verdict", "measured", "reference", "tolerance", "what was measured"}, rows);
+  html += table({"check", "verdict", "measured", "reference", "tolerance", "what was measured"},
+                rows, table_source);
   if (!report.not_applicable.empty()) {
     html += "<p>Not applicable to this law:</p>\n<ul>\n";
     for (const auto& [id, why] : report.not_applicable)

@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "reports/html.h"
 #include "verification/conformance.h"
 
 namespace ivv::reports {
@@ -17,9 +18,12 @@ using PlacePlot = std::function<std::string(const verification::Plot&, const std
 // A <section> (HTML) for one law: verdict, the checks table (measured, reference, tolerance,
 // why, detail), what was not applicable, and the delivered COR drawn against the claim.
 // `anchor` is the section's id. `place` draws the plots (default: gnuplot now, inline; a plot
-// that cannot be drawn is said so in place).
+// that cannot be drawn is said so in place). `table_source` labels the checks table (the main
+// report names the examples.* cases that judge it; by default each row is a check with its
+// verdict).
 std::string law_section_html(const conformance::Report& report, const std::string& anchor,
-                             const std::string& intro_html = "", const PlacePlot& place = {});
+                             const std::string& intro_html = "", const PlacePlot& place = {},
+                             const Source& table_source = Source::rows_are_cases());
 
 // Throws InputError("--report", ...) unless DIR is a directory or can be created (checked
 // before any computation, so bad input costs nothing).

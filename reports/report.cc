@@ -21,8 +21,8 @@
 #include "reports/speed_error.h"
 #include "solver/atomic_file.h"
 #include "solver/input_error.h"
-#include "verification/examples.h"
 #include "solver/parallel.h"
+#include "verification/examples.h"
 #include "verification/registry.h"
 
 namespace ivv::reports {
@@ -97,16 +97,17 @@ class FigureBook {
   }
   std::string figure_html(std::size_t i) const {
     const Figure& f = figures_[i];
-    std::string out =
-        "<figure id=\"fig-" + f.plot.id + "\"" + (f.full_width ? " class=\"wide\"" : "") + ">\n";
+    std::string out = "<figure id=\"fig-" + f.plot.id + "\"" +
+                      (f.full_width ? " class=\"wide\"" : "") + source_attribute(f.source) + ">\n";
     if (errors_[i].empty()) {
       out += svgs_[i];
     } else {
       out += "<div class=\"plot-error\" data-plot-id=\"" + escape(f.plot.id) +
              "\">This plot could not be drawn: " + escape(errors_[i]) + "</div>";
     }
-    out += "\n<figcaption><b class=\"ftitle\">" + escape(f.plot.title) + "</b>" + f.caption +
-           "</figcaption>\n";
+    const std::string label = source_label(f.source);
+    out += "\n<figcaption><b class=\"ftitle\">" + escape(f.plot.title) + "</b>" +
+           (label.empty() ? "" : label + "<br>") + f.caption + "</figcaption>\n";
     out += "</figure>\n";
     return out;
   }
@@ -192,8 +193,8 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
          std::to_string(n), std::to_string(pass),
          n == pass ? "0" : "<span class=\"fail\">" + std::to_string(n - pass) + "</span>"});
   }
-  out += "<h3>Cases per evidence tier</h3>\n" +
-         table({"tier", "cases", "passed", "failed"}, rows, "data counts");
+  out += "<h3>Cases per evidence tier</h3>\n" + table({"tier", "cases", "passed", "failed"}, rows,
+                                                      Source::rows_are_cases(), "data counts");
 
   if (failed > 0 || !section_errors.empty()) {
     out += "<h3 id=\"failures\">What fell short</h3>\n";
@@ -205,7 +206,8 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
                        escape(comparison_text(r.outcome)), escape(r.outcome.detail)});
     }
     for (const auto& e : section_errors) frows.push_back({"report section", "", escape(e)});
-    out += table({"case", "comparison", "detail"}, frows, "data failures");
+    out +=
+        table({"case", "comparison", "detail"}, frows, Source::rows_are_cases(), "data failures");
   }
 
   out += "<h3>Provenance</h3>\n<dl class=\"prov\">\n";
@@ -260,13 +262,13 @@ std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book)
     const std::string tier(verification::to_string(t));
     out += "<h3 id=\"tier-" + slug(tier) + "\">" + escape(tier) + " (" +
            std::to_string(in_tier.size()) + " cases)</h3>\n";
-    out +=
-        "<table class=\"data cases\"><colgroup><col class=\"c-id\"><col class=\"c-num\">"
-        "<col class=\"c-num\"><col class=\"c-tol\"><col class=\"c-cmp\"><col class=\"c-reason\">"
-        "<col class=\"c-margin\"><col class=\"c-verdict\"></colgroup>\n<thead><tr><th>case</th>"
-        "<th class=\"num\">measured</th><th class=\"num\">reference</th>"
-        "<th class=\"num\">tolerance</th><th>comparison</th><th>why this tolerance</th>"
-        "<th class=\"num\">margin</th><th>verdict</th></tr></thead>\n<tbody>\n";
+    out += table_open(Source::rows_are_cases(), "data cases") +
+           "<colgroup><col class=\"c-id\"><col class=\"c-num\">"
+           "<col class=\"c-num\"><col class=\"c-tol\"><col class=\"c-cmp\"><col class=\"c-reason\">"
+           "<col class=\"c-margin\"><col class=\"c-verdict\"></colgroup>\n<thead><tr><th>case</th>"
+           "<th class=\"num\">measured</th><th class=\"num\">reference</th>"
+           "<th class=\"num\">tolerance</th><th>comparison</th><th>why this tolerance</th>"
+           "<th class=\"num\">margin</th><th>verdict</th></tr></thead>\n<tbody>\n";
     for (const CaseRecord* r : in_tier) {
       const auto& o = r->outcome;
       const std::string anchor = case_anchor(r->c->id);
@@ -280,7 +282,7 @@ std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book)
       std::string detail = "<p>" + escape(o.detail) + "</p><p>" + escape(comparison_text(o)) +
                            "; run time " + number(r->seconds, 3) + " s.</p>\n";
       for (std::size_t i = 0; i < o.plots.size(); ++i) {
-        Figure f{o.plots[i], ""};
+        Figure f{o.plots[i], "", false, Source::from_cases({r->c->id})};
         f.plot.id = r->c->id + "." + (f.plot.id.empty() ? "plot" + std::to_string(i) : f.plot.id);
         detail += book.add(std::move(f));
       }
@@ -317,7 +319,7 @@ std::string paper_html(const SectionOptions& so, FigureBook& book) {
   std::string out =
       "<p>The figures of the paper (<i>A nonlinear visco-elastoplastic impact model and the "
       "coefficient of restitution</i>, Table 1 scene) recomputed by this library: the nonlinear "
-      "model by numerical integration (odeint-dopri5, rtol 1e-10, events located), the "
+      "model by numerical integration (odeint-dopri5, rtol 1e-12, events located), the "
       "linearized model in closed form, Hunt-Crossley fitted by <code>fit_hunt_crossley</code>. "
       "The paper's own fitted Hunt-Crossley values are withheld; nothing here uses them. Where "
       "the paper does not state a parameter (the S<sub>y</sub> and mass values of Figs 8-9, the "
@@ -327,11 +329,30 @@ std::string paper_html(const SectionOptions& so, FigureBook& book) {
   return out + figures_html(paper_figures(so), book);
 }
 
+// One row of a "delivered e at v0 = 1" table: the reference run's e at 1 m/s of a worked
+// example claiming the COR e_t, its miss and the verdict of its dynamic.expected_cor check.
+std::vector<std::string> delivered_row(std::vector<std::string> leading,
+                                       const verification::ExampleRun& run, double e_t) {
+  const auto* c = verification::find_check(run.report, "dynamic.expected_cor");
+  std::optional<double> e;
+  for (const auto& p : run.report.cor)
+    if (std::abs(p.v0 - 1.0) < 1e-12 && p.e) e = p.e;
+  leading.push_back(number_html(e_t));
+  leading.push_back(e ? number_html(*e, 7) : "failed");
+  leading.push_back(e ? number_html(*e - e_t, 3) : "");
+  leading.push_back(c && c->passed ? "<span class=\"pass\">delivers</span>"
+                                   : "<span class=\"fail\">misses</span>");
+  return leading;
+}
+
 // Contact-law worked examples: the same memoised conformance runs the example cases judge.
 std::string examples_html(const SectionOptions& so, FigureBook& book) {
   using verification::ExampleRun;
-  const PlacePlot place = [&book](const Plot& p, const std::string& caption) {
-    return book.add({p, escape(caption), false});
+  // the conformance plots of one example, from its cases
+  const auto place = [&book](const std::string& cases) -> PlacePlot {
+    return [&book, cases](const Plot& p, const std::string& caption) {
+      return book.add({p, escape(caption), false, Source::from_cases({cases})});
+    };
   };
   auto command = [](const ExampleRun& run) {
     return run.command.empty() ? std::string()
@@ -346,23 +367,27 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
       "tables are those cases' measurements.</p>\n";
   so.say("worked examples: Thornton");
   const ExampleRun& thornton = verification::thornton_example();
-  out += "<h3 id=\"example-thornton\">Thornton (1997), elastic-perfectly-plastic (C++)</h3>\n" +
-         law_section_html(thornton.report, "examples-thornton",
-                          "<p>Source: <code>examples/laws/thornton.h</code>; claimed COR: "
-                          "Thornton's closed form (SPEC §3).</p>\n",
-                          place);
+  out +=
+      "<h3 id=\"example-thornton\">Thornton (1997), elastic-perfectly-plastic (C++)</h3>\n" +
+      law_section_html(thornton.report, "examples-thornton",
+                       "<p>Source: <code>examples/laws/thornton.h</code>; claimed COR: "
+                       "Thornton's closed form (SPEC §3).</p>\n",
+                       place("examples.thornton.*"), Source::from_cases({"examples.thornton.*"}));
   so.say("worked examples: Kuwabara-Kono");
   const ExampleRun& kk = verification::kuwabara_kono_example();
   out += "<h3 id=\"example-kuwabara-kono\">Kuwabara-Kono viscoelastic Hertz (C++)</h3>\n" +
          law_section_html(kk.report, "examples-kuwabara-kono",
                           "<p>Source: <code>examples/laws/kuwabara_kono.h</code>; claimed COR: "
                           "the Muller-Poschel Pade form (SPEC §3).</p>\n",
-                          place);
+                          place("examples.kuwabara-kono.*"),
+                          Source::from_cases({"examples.kuwabara-kono.*"}));
   so.say("worked examples: Kelvin-Voigt");
   const ExampleRun& kv = verification::kelvin_voigt_example();
   out +=
       "<h3 id=\"example-kelvin-voigt\">Kelvin-Voigt k z + c dz/dt (expression): rejected</h3>\n" +
-      law_section_html(kv.report, "examples-kelvin-voigt", command(kv), place);
+      law_section_html(kv.report, "examples-kelvin-voigt", command(kv),
+                       place("examples.kelvin-voigt.rejected"),
+                       Source::from_cases({"examples.kelvin-voigt.rejected"}));
 
   so.say("worked examples: Hunt-Crossley damping maps");
   out +=
@@ -374,20 +399,13 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
       "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
       "miss is within 10<sup>-6</sup>.</p>\n";
   std::vector<std::vector<std::string>> rows;
-  for (const auto& map : oracles::damping_maps()) {
-    for (double e_t : verification::example_target_cors()) {
-      const ExampleRun& run = verification::hunt_crossley_map_example(std::string(map.name), e_t);
-      const auto* c = verification::find_check(run.report, "dynamic.expected_cor");
-      std::optional<double> e;
-      for (const auto& p : run.report.cor)
-        if (std::abs(p.v0 - 1.0) < 1e-12 && p.e) e = p.e;
-      rows.push_back({escape(map.name), escape(map.formula), number_html(e_t),
-                      e ? number_html(*e, 7) : "failed", e ? number_html(*e - e_t, 3) : "",
-                      c && c->passed ? "<span class=\"pass\">delivers</span>"
-                                     : "<span class=\"fail\">misses</span>"});
-    }
-  }
-  out += table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows);
+  for (const auto& map : oracles::damping_maps())
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(
+          delivered_row({escape(map.name), escape(map.formula)},
+                        verification::hunt_crossley_map_example(std::string(map.name), e_t), e_t));
+  out += table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows,
+               Source::from_cases({"examples.hunt-crossley.*"}));
 
   so.say("worked examples: Tsuji-type damping");
   out +=
@@ -400,20 +418,12 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
       "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
       "<code>examples.tsuji.*</code>).</p>\n";
   rows.clear();
-  for (bool tension : {false, true}) {
-    for (double e_t : verification::example_target_cors()) {
-      const ExampleRun& run = verification::tsuji_example(e_t, tension);
-      const auto* c = verification::find_check(run.report, "dynamic.expected_cor");
-      std::optional<double> e;
-      for (const auto& p : run.report.cor)
-        if (std::abs(p.v0 - 1.0) < 1e-12 && p.e) e = p.e;
-      rows.push_back({tension ? "tension until z = 0" : "clamped, F &ge; 0", number_html(e_t),
-                      e ? number_html(*e, 7) : "failed", e ? number_html(*e - e_t, 3) : "",
-                      c && c->passed ? "<span class=\"pass\">delivers</span>"
-                                     : "<span class=\"fail\">misses</span>"});
-    }
-  }
-  out += table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"}, rows);
+  for (bool tension : {false, true})
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(delivered_row({tension ? "tension until z = 0" : "clamped, F &ge; 0"},
+                                   verification::tsuji_example(e_t, tension), e_t));
+  out += table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"}, rows,
+               Source::from_cases({"examples.tsuji.*"}));
   return out;
 }
 
@@ -424,25 +434,33 @@ std::string restitution_html(const SectionOptions& so, FigureBook& book) {
       "(SPEC §3).</p>\n";
   out += book.add(r.figures.at(0));
   std::string t =
-      "<table class=\"data slopes\"><thead><tr><th class=\"num\">v0/v_y</th>"
-      "<th class=\"num\">e (closed form)</th><th class=\"num\">d ln e/d ln v0 "
-      "(closed form)</th><th class=\"num\">d ln e/d ln v0 (simulated)</th>"
-      "<th class=\"num\">e / asymptote</th></tr></thead><tbody>\n";
+      table_open(Source::from_cases({"trend.cor-undamped-simulated-is-closed-form",
+                                     "trend.cor-slope-simulated-is-closed-form",
+                                     "trend.cor-slope-near-yield", "trend.cor-slope-minus-quarter",
+                                     "trend.cor-undamped-asymptote"}),
+                 "data slopes") +
+      "<thead><tr><th class=\"num\">v0/v_y</th>"
+      "<th class=\"num\">e (closed form)</th><th class=\"num\">e (simulated)</th>"
+      "<th class=\"num\">d ln e/d ln v0 (closed form)</th><th class=\"num\">d ln e/d ln v0 "
+      "(simulated)</th><th class=\"num\">e / asymptote</th></tr></thead><tbody>\n";
   for (const auto& s : r.slopes)
-    t += "<tr><td class=\"num\">" + number(s.velocity_ratio, 4) + "</td><td class=\"num\">" +
-         number(s.e, 6) + "</td><td class=\"num\">" + number(s.slope_closed_form, 5) +
-         "</td><td class=\"num\">" + number(s.slope_simulated, 5) + "</td><td class=\"num\">" +
-         number(s.e_over_asymptote, 5) + "</td></tr>\n";
+    t += "<tr><td class=\"num\">" + number(s.ratio, 4) + "</td><td class=\"num\">" +
+         number(s.e_closed_form, 6) + "</td><td class=\"num\">" + number(s.e_simulated, 6) +
+         "</td><td class=\"num\">" + number(s.slope_closed_form, 5) + "</td><td class=\"num\">" +
+         number(s.slope_simulated, 5) + "</td><td class=\"num\">" +
+         number(s.e_closed_form / s.asymptote, 5) + "</td></tr>\n";
   t += "</tbody></table>\n";
   out +=
       "<h3>Local slope of the undamped COR</h3>\n<p>Central differences over v<sub>0</sub>(1 ± " +
       number(r.log_step) +
-      "), of the closed form and of simulations (odeint-dopri5, rtol = "
-      "atol = 1e-12). The slope tends to −1/4 from below only slowly; it is not −1/4 just "
+      "), of the closed form and of simulations (odeint-dopri5, rtol 1e-12, atol 1e-14); the "
+      "one slope computation of ivv (<code>verification::undamped_cor_study</code>), read by "
+      "the cases below. The slope tends to −1/4 from below only slowly; it is not −1/4 just "
       "above yield.</p>\n" +
       t;
   out += figures_html({r.figures.begin() + 1, r.figures.end()}, book);
-  std::string mt = "<table class=\"data maps\"><thead><tr><th>map</th><th>μ(e, v0)</th>";
+  std::string mt = table_open(Source::from_cases({"trend.hunt-crossley-map.*"}), "data maps") +
+                   "<thead><tr><th>map</th><th>μ(e, v0)</th>";
   for (double e : r.map_targets) mt += "<th class=\"num\">target e = " + number(e) + "</th>";
   mt += "</tr></thead><tbody>\n";
   for (const auto& m : r.maps) {
@@ -451,18 +469,22 @@ std::string restitution_html(const SectionOptions& so, FigureBook& book) {
     mt += "</tr>\n";
   }
   mt += "</tbody></table>\n";
-  out += "<h3>What each Hunt-Crossley damping map delivers</h3>\n" + mt;
+  out +=
+      "<h3>What each Hunt-Crossley damping map delivers</h3>\n<p>Simulated (odeint-dopri5, "
+      "rtol 1e-12) at v<sub>0</sub> = 1 m/s with the μ each map picks.</p>\n" +
+      mt;
   return out;
 }
 
-std::string status_cell(const HardCaseCell& c) {
+std::string status_cell(const verification::HardCaseCell& c) {
   const ImpactResult& r = c.result;
   std::string s = "<b>" + escape(std::string(to_string(r.status))) + "</b>";
   if (r.ok())
     s += "<br>e = " + number(r.e, 8);
   else
     s += "<br><small>" + escape(r.reason) + "</small>";
-  s += "<br>" + std::to_string(r.steps) + " steps, " + number(c.seconds * 1e3, 3) + " ms";
+  s += "<br>" + std::to_string(r.steps) + " steps, " + number(c.seconds * 1e3, 3) +
+       " ms <small>(time: information)</small>";
   return s;
 }
 
@@ -479,12 +501,12 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
     out += book.add(s.figures.at(fig++));
     out += book.add(s.figures.at(fig++));
     out += "</div>\n";
-    std::string t =
-        "<table class=\"data\"><thead><tr><th>integrator</th><th class=\"num\">"
-        "tolerance</th><th class=\"num\">time/impact [s]</th><th class=\"num\">"
-        "error e</th><th class=\"num\">error F_max</th><th class=\"num\">error "
-        "t_f</th><th class=\"num\">steps</th><th class=\"num\">RHS evals</th>"
-        "<th>status</th></tr></thead><tbody>\n";
+    std::string t = table_open(Source::timing({"cross.*"})) +
+                    "<thead><tr><th>integrator</th><th class=\"num\">"
+                    "tolerance</th><th class=\"num\">time/impact [s]</th><th class=\"num\">"
+                    "error e</th><th class=\"num\">error F_max</th><th class=\"num\">error "
+                    "t_f</th><th class=\"num\">steps</th><th class=\"num\">RHS evals</th>"
+                    "<th>status</th></tr></thead><tbody>\n";
     for (const auto& series : study.series)
       for (const auto& p : series.points)
         t += "<tr><td>" + escape(std::string(to_string(series.integrator))) +
@@ -508,20 +530,25 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
     crows.push_back({escape(std::string(to_string(c.integrator))),
                      c.events_located ? "located on the interpolant" : "at step ends only",
                      number(c.fitted_order, 4)});
-  out += table({"integrator", "events", "fitted order"}, crows);
+  out += table({"integrator", "events", "fitted order"}, crows,
+               Source::from_cases({"convergence.rk4.events-at-step-ends",
+                                   "convergence.dp45.events-at-step-ends"}));
 
   out +=
       "<h3>Hard cases</h3>\n<p>Each integrator with its defaults (rtol 1e-10; rk4 dt = 1e-3 "
-      "in τ) on the hard scenes of SPEC §6: status, e, accepted steps and wall time of one "
-      "run. A solver that cannot meet its tolerance must say so (status failed), never "
-      "return a silently wrong COR.</p>\n";
-  std::string t = "<table class=\"data hard\"><thead><tr><th>scene</th><th>independent e</th>";
+      "in τ) on the hard scenes of SPEC §6: status, e, accepted steps and the wall time of "
+      "the one run (information only: measured while other cases may run on other threads, "
+      "never judged). A solver that cannot meet its tolerance must say so (status failed), "
+      "never return a silently wrong COR.</p>\n";
+  std::string t = table_open(Source::from_cases({"stability.hard-cases.named-or-within-tolerance"}),
+                             "data hard") +
+                  "<thead><tr><th>scene</th><th>independent e</th>";
   if (!s.hard_cases.empty())
     for (const auto& c : s.hard_cases.front().cells)
       t += "<th>" + escape(std::string(to_string(c.integrator))) + "</th>";
   t += "</tr></thead><tbody>\n";
   for (const auto& row : s.hard_cases) {
-    t += "<tr><td><b>" + escape(row.name) + "</b><br><small>" + row.description +
+    t += "<tr><td><b>" + escape(row.name) + "</b><br><small>" + escape(row.description) +
          "</small></td><td>" + num_cell(row.reference_e, 10) + "<br><small>" +
          escape(row.reference_source) + "</small></td>";
     for (const auto& c : row.cells) t += "<td>" + status_cell(c) + "</td>";

@@ -1,13 +1,18 @@
 // Unit tests of the report's parts: HTML helpers, gnuplot SVG rendering and its check, the
-// machine-readable companions, the restitution asymptote, and write_report's input errors.
+// machine-readable companions, the restitution asymptote, write_report's input errors, and
+// that every figure and table of a rendered report names its cases or is labelled.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "oracles/undamped_elastoplastic.h"
 #include "reports/companions.h"
@@ -64,6 +69,23 @@ TEST(Html, PageIsSelfContained) {
   EXPECT_NE(html.find("@media print"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("http"), std::string::npos);
+}
+
+TEST(Html, SourcesAreAttributesAndVisibleLabels) {
+  EXPECT_EQ(source_attribute(Source::from_cases({"trend.a", "trend.b.*"})),
+            " data-source=\"cases:trend.a trend.b.*\"");
+  EXPECT_EQ(source_attribute(Source{}), " data-source=\"unstated\"");
+  EXPECT_EQ(source_attribute(Source::rows_are_cases()), " data-source=\"case-rows\"");
+  const std::string from = source_label(Source::from_cases({"trend.a", "trend.b.*"}));
+  EXPECT_NE(from.find("From cases"), std::string::npos);
+  EXPECT_NE(from.find("href=\"#case-trend-a\""), std::string::npos) << "an id links to its case";
+  EXPECT_EQ(from.find("href=\"#case-trend-b"), std::string::npos) << "a glob is not a link";
+  EXPECT_NE(source_label(Source::illustration({"trend.a"})).find(">Illustration<"),
+            std::string::npos);
+  EXPECT_NE(source_label(Source::timing()).find("Timing, information only"), std::string::npos);
+  const std::string t = table({"h"}, {{"1"}}, Source::timing());
+  EXPECT_LT(t.find("Timing, information only"), t.find("<table")) << "label before the table";
+  EXPECT_NE(t.find("<table class=\"data\" data-source=\"timing\">"), std::string::npos);
 }
 
 TEST(GnuplotScript, SkipsNonFiniteAndNonPositiveOnLogAxes) {
@@ -177,9 +199,9 @@ TEST(Restitution, ClosedFormApproachesTheDerivedAsymptote) {
     s.velocity = ratio * v_y;
     const double e =
         oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
-    EXPECT_NEAR(e / undamped_cor_asymptote(ratio), 1.0, 1e-3) << "v0/v_y = " << ratio;
+    EXPECT_NEAR(e / verification::undamped_cor_asymptote(ratio), 1.0, 1e-3) << "v0/v_y = " << ratio;
   }
-  EXPECT_NEAR(undamped_cor_asymptote(1.0), std::pow(15.0 / 8.0, 0.125), 1e-15);
+  EXPECT_NEAR(verification::undamped_cor_asymptote(1.0), std::pow(15.0 / 8.0, 0.125), 1e-15);
 }
 
 TEST(PaperFigures, ParametersNameTheDashpotAndDamping) {
@@ -227,6 +249,93 @@ TEST(WriteReport, RejectsAFilterMatchingNoCase) {
     EXPECT_EQ(e.field(), "--filter");
   }
   EXPECT_FALSE(fs::exists(o.out_dir / "index.html"));
+  fs::remove_all(o.out_dir);
+}
+
+// Issue 10: every figure and table of the rendered report either names the verification
+// case(s) whose measurements it shows (ids that exist, or globs that match some) or carries a
+// visible "Illustration" / "Timing, information only" label. A figure or table added without a
+// Source renders data-source="unstated" and fails here.
+struct Element {
+  std::string tag, kind, cases, html;  // html: the element (figure) or its label and tag (table)
+};
+
+std::string attribute(const std::string& tag_text, const std::string& name) {
+  const std::string key = " " + name + "=\"";
+  const auto at = tag_text.find(key);
+  if (at == std::string::npos) return "";
+  const auto start = at + key.size();
+  return tag_text.substr(start, tag_text.find('"', start) - start);
+}
+
+std::vector<Element> sourced_elements(const std::string& html) {
+  std::vector<Element> out;
+  for (const std::string tag : {"figure", "table"}) {
+    for (auto pos = html.find("<" + tag); pos != std::string::npos;
+         pos = html.find("<" + tag, pos + 1)) {
+      const char next = html[pos + 1 + tag.size()];
+      if (next != ' ' && next != '>') continue;  // <tablex>, <figcaption>
+      const std::string open = html.substr(pos, html.find('>', pos) - pos + 1);
+      const std::string source = attribute(open, "data-source");
+      Element e;
+      e.tag = tag;
+      e.kind = source.substr(0, source.find(':'));
+      e.cases = source.find(':') == std::string::npos ? "" : source.substr(source.find(':') + 1);
+      if (tag == "figure") {
+        e.html = html.substr(pos, html.find("</figure>", pos) - pos);
+      } else {  // the label paragraph right before the table, and the tag
+        const auto label = html.rfind("<p class=\"source\">", pos);
+        const bool adjacent = label != std::string::npos && html.find("</p>", label) < pos &&
+                              pos - html.find("</p>", label) <= 5;
+        e.html = (adjacent ? html.substr(label, pos - label) : std::string()) + open;
+      }
+      out.push_back(e);
+    }
+  }
+  return out;
+}
+
+TEST(WriteReport, EveryFigureAndTableNamesItsCasesOrIsLabelled) {
+  ReportOptions o;
+  o.out_dir = fs::temp_directory_path() / "ivv-report-sources";
+  o.filter = "trend.paper.*";
+  o.quick = true;
+  o.threads = 2;
+  const ReportSummary summary = write_report(o);
+  std::ifstream in(summary.index_html);
+  const std::string html{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto elements = sourced_elements(html);
+  std::map<std::string, int> kinds;
+  int figures = 0;
+  for (const Element& e : elements) {
+    figures += e.tag == "figure";
+    ++kinds[e.kind];
+    const std::string what = e.tag + " " + e.html.substr(0, 160);
+    ASSERT_TRUE(e.kind == "cases" || e.kind == "case-rows" || e.kind == "illustration" ||
+                e.kind == "timing")
+        << "no source stated: " << what;
+    std::istringstream ids(e.cases);
+    int n = 0;
+    for (std::string id; ids >> id; ++n)
+      EXPECT_FALSE(verification::all_cases().matching(id).empty())
+          << "names a case that does not exist: " << id << " in " << what;
+    if (e.kind == "cases") {
+      EXPECT_GT(n, 0) << what;
+      EXPECT_NE(e.html.find("From case"), std::string::npos) << "no visible label: " << what;
+    }
+    if (e.kind == "illustration") {
+      EXPECT_NE(e.html.find(">Illustration<"), std::string::npos) << "no visible label: " << what;
+    }
+    if (e.kind == "timing") {
+      EXPECT_NE(e.html.find("Timing, information only"), std::string::npos)
+          << "no visible label: " << what;
+    }
+  }
+  EXPECT_EQ(static_cast<std::size_t>(figures), summary.plots) << "every plot is in a <figure>";
+  EXPECT_GT(kinds["cases"], 0);
+  EXPECT_GT(kinds["illustration"], 0);
+  EXPECT_GT(kinds["timing"], 0);
+  for (const auto& [kind, n] : kinds) std::cout << "  " << kind << ": " << n << "\n";
   fs::remove_all(o.out_dir);
 }
 

@@ -1,12 +1,8 @@
 #include "reports/speed_error.h"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
-#include "oracles/hunt_crossley.h"
-#include "oracles/linear_model.h"
-#include "oracles/undamped_elastoplastic.h"
 #include "reports/html.h"
 
 namespace ivv::reports {
@@ -91,14 +87,8 @@ void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::s
       caption += " " + std::to_string(failed) +
                  " points failed or ended in another status than the reference and are not drawn "
                  "(see the table).";
-    out.push_back({p, caption});
+    out.push_back({p, caption, false, Source::timing({"cross.*"})});
   }
-}
-
-double seconds_of(const std::function<void()>& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -164,133 +154,45 @@ SpeedSection speed_section(const SectionOptions& options) {
     work_precision_figures(out.studies.back(), spec.id, peers, out.figures);
   }
 
-  options.say("speed: convergence order of rk4 and dp45 (fixed step), with and without events");
+  options.say("speed: convergence of rk4 and dp45 (fixed step), from the study the cases read");
   {
-    SimulationRequest base;
-    // 5 m/s: at 1 m/s the undamped linearized loading stops below 2.25 z_y, where the law
-    // is undefined (paper eq. 17)
-    base.scene = paper_with(5.0, Damping::none());
-    base.law = LawKind::linearized;
-    const std::vector<double> dts =
-        options.quick ? std::vector<double>{0.1, 0.05, 0.025, 0.0125}
-                      : std::vector<double>{0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125};
+    const verification::FixedStepConvergenceStudy& st =
+        verification::fixed_step_convergence_study();
     Plot p;
     p.id = "speed-convergence";
     p.title = "Convergence of the fixed-step integrators: error of e against the step";
     p.x_label = "fixed step dt in normalised time τ [-]";
     p.y_label = "relative error of e vs closed form [-]";
     p.log_x = p.log_y = true;
-    for (IntegratorKind k : {IntegratorKind::rk4, IntegratorKind::dp45}) {
-      for (bool located : {true, false}) {
-        out.convergence.push_back(bench::measure_convergence(base, k, dts, located));
-        const auto& c = out.convergence.back();
-        Series s;
-        s.label = std::string(to_string(k)) +
-                  (located ? ", events located" : ", events at step ends") + ": order " +
-                  number(c.fitted_order, 3);
-        s.style = located ? Series::Style::linespoints : Series::Style::points;
-        s.x = c.steps;
-        s.y = c.errors_e;
-        p.series.push_back(s);
-      }
+    for (const bench::ConvergenceStudy& c : st.runs) {
+      out.convergence.push_back(c);
+      Series s;
+      s.label = std::string(to_string(c.integrator)) +
+                (c.events_located ? ", events located" : ", events at step ends") + ": order " +
+                number(c.fitted_order, 3);
+      s.style = c.events_located ? Series::Style::linespoints : Series::Style::points;
+      s.x = c.steps;
+      s.y = c.errors_e;
+      p.series.push_back(s);
     }
     out.figures.push_back(
         {p,
-         "Linearized law, paper scene without dashpot at v<sub>0</sub> = 5 m/s, where the "
-         "exact COR is e = γ (eqs 19-20). rk4, and dp45 with its error control off; the "
-         "fitted order (legend and table) is the least-squares slope of log(error) on "
+         "Linearized law, paper scene at v<sub>0</sub> = 1 m/s with ζ = 0.1, where the exact "
+         "COR is known in closed form (eqs 22-25). rk4, and dp45 with its error control off; "
+         "the fitted order (legend and table) is the least-squares slope of log(error) on "
          "log(dt). With event location it measures the method's convergence (formal orders: "
-         "rk4 4, dp45 5). Detected only at step ends, the switch to unloading and the "
-         "separation are "
-         "found to within one step, and the error stops falling as dt<sup>p</sup>: the "
-         "open markers.",
-         true});
+         "rk4 4, dp45 5; the generic cases <code>convergence.order.*</code> check every "
+         "fixed-step integrator's declared order). Detected only at step ends, the switch to "
+         "unloading and the separation are found to within one step, and the error stops "
+         "falling as dt<sup>p</sup>: the open markers.",
+         true,
+         Source::from_cases({"convergence.rk4.events-at-step-ends",
+                             "convergence.dp45.events-at-step-ends", "convergence.order.rk4",
+                             "convergence.order.dp45"})});
   }
 
-  options.say("speed: hard cases, every double-precision integrator");
-  {
-    const std::vector<IntegratorKind> integrators = production_integrators();
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    auto undamped_e = [](const Scene& s) {
-      return oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
-    };
-    struct Spec {
-      std::string name, description;
-      SimulationRequest req;
-      double reference_e;
-      std::string source;
-    };
-    std::vector<Spec> specs;
-    {
-      SimulationRequest r;
-      r.scene = paper_with(1.0, Damping::ratio(1000));
-      specs.push_back({"stiff dashpot",
-                       "paper scene, v<sub>0</sub> = 1 m/s, ζ = 1000: the "
-                       "dashpot time scale is 1/(2ζ) = 5e-4 in τ, the contact lasts far longer",
-                       r, nan, "none in closed form: the integrators check each other"});
-    }
-    {
-      SimulationRequest r;
-      r.scene = paper_with(1e-6, Damping::none());
-      specs.push_back({"grazing",
-                       "paper scene, v<sub>0</sub> = 1e-6 m/s, no dashpot: a "
-                       "nanometre-scale Hertz impact",
-                       r, 1.0, "Hertz: elastic, e = 1"});
-    }
-    {
-      SimulationRequest r;
-      r.scene = paper_with(100.0, Damping::none());
-      specs.push_back({"fast",
-                       "paper scene, v<sub>0</sub> = 100 m/s, no dashpot: deep in "
-                       "the plastic range",
-                       r, undamped_e(r.scene), "undamped elastoplastic closed form (energy)"});
-    }
-    {
-      SimulationRequest r;
-      // The linearized law at 50 m/s, zeta = 0.6: its unloading damping ratio zeta/gamma
-      // exceeds 1, so the closed form says capture (the scene of stability.capture.*).
-      r.scene = paper_with(50.0, Damping::ratio(0.6));
-      r.law = LawKind::linearized;
-      const auto lin =
-          oracles::solve_linear_model(oracles::linear_model_input(r.scene, derive(r.scene)));
-      const std::string zeta1 = "ζ<sub>1</sub> = ζ/γ = " + number(lin.zeta_unload, 4);
-      specs.push_back({"capture",
-                       "linearized law, paper scene, v<sub>0</sub> = 50 m/s, ζ = 0.6: " + zeta1 +
-                           (lin.captured ? " ≥ 1, so the unloading is overdamped: the spring "
-                                           "relaxes only asymptotically and nothing rebounds"
-                                         : " &lt; 1: a rebound"),
-                       r, lin.e,
-                       lin.captured ? "linearized closed form: capture, e = 0"
-                                    : "linearized closed form (eqs 22-25)"});
-    }
-    {
-      SimulationRequest r;
-      r.scene = paper_with(1.0, Damping::none());
-      r.law = LawKind::hunt_crossley;
-      r.parameters["mu"] = 5.0;
-      specs.push_back({"Hunt-Crossley μv0 = 5",
-                       "Hunt-Crossley (eq. 27) with K = K<sub>h</sub>, "
-                       "μ = 5 s/m, v<sub>0</sub> = 1 m/s: μv<sub>0</sub> &gt; 1, a damping force "
-                       "larger than the elastic one",
-                       r, oracles::hunt_crossley_cor(5.0), "exact Hunt-Crossley COR (Lambert W)"});
-    }
-    for (auto& spec : specs) {
-      HardCaseRow row;
-      row.name = spec.name;
-      row.description = spec.description;
-      row.reference_e = spec.reference_e;
-      row.reference_source = spec.source;
-      for (IntegratorKind k : integrators) {
-        SimulationRequest r = spec.req;
-        r.integrator = k;
-        HardCaseCell cell;
-        cell.integrator = k;
-        cell.seconds = seconds_of([&] { cell.result = simulate(r); });
-        row.cells.push_back(cell);
-      }
-      out.hard_cases.push_back(row);
-    }
-  }
+  options.say("speed: hard cases, every double-precision integrator (study)");
+  out.hard_cases = verification::hard_case_study();
   return out;
 }
 
@@ -314,7 +216,7 @@ std::string ratio_table_html(const SpeedSection& s) {
          "fastest run of each peer (same scene, same mp50 reference, same machine and run); "
          "ratio = peer time / ivv time (above 1: ivv is faster). NaN: no run reached the "
          "level.</p>\n" +
-         table(head, rows);
+         table(head, rows, Source::timing());
 }
 
 }  // namespace ivv::reports

@@ -3,7 +3,10 @@
 
 #include <span>
 #include <string_view>
+#include <vector>
 
+#include "oracles/hertz.h"
+#include "solver/scene.h"
 #include "verification/registry.h"
 
 namespace ivv::verification {
@@ -25,5 +28,16 @@ struct DemBenchmarkScene {
 };
 // Chung & Ooi (2011) normal-impact Tests 1 and 2; case ids are "dem.<scene>.<integrator>".
 std::span<const DemBenchmarkScene> chung_ooi_scenes();
+
+// The reference of the dem.<scene>.* cases: the shipped scene, its derived parameters and the
+// Hertz closed form with the effective radius and mass (oracles/hertz.h; SI units). A study
+// (verification/study.h): loaded and solved once, read by the cases and the report's DEM table.
+struct DemReference {
+  DemBenchmarkScene benchmark;
+  Scene scene;
+  DerivedParameters derived;
+  oracles::HertzImpact closed_form;
+};
+const std::vector<DemReference>& chung_ooi_references();
 
 }  // namespace ivv::verification

@@ -98,11 +98,11 @@ Outcome step_ends_case(IntegratorKind k) {
   const bench::ConvergenceStudy& naive = st.of(k, false);
   std::string errors;
   for (double e : naive.errors_e) errors += (errors.empty() ? "" : ", ") + fmt(e, 3);
-  Outcome o = at_most(naive.fitted_order, 2.5,
-                      "least-squares slope of log(error in e) on log(h) over h = " +
-                          fmt(naive.steps.front()) + " ... " + fmt(naive.steps.back()) +
-                          "; errors " + errors + " (events located: order " +
-                          fmt(located.fitted_order, 3) + ")");
+  Outcome o = at_most(
+      naive.fitted_order, 2.5,
+      "least-squares slope of log(error in e) on log(h) over h = " + fmt(naive.steps.front()) +
+          " ... " + fmt(naive.steps.back()) + "; errors " + errors + " (events located: order " +
+          fmt(located.fitted_order, 3) + ")");
   o.reference = 2.0;
   o.plots.push_back(
       convergence_plot(std::string("convergence-") + std::string(to_string(k)), located, naive));

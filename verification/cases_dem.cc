@@ -16,6 +16,7 @@
 
 #include "oracles/hertz.h"
 #include "verification/cases.h"
+#include "verification/study.h"
 #include "verification/support.h"
 #include "verification/tolerances.h"
 
@@ -29,15 +30,21 @@ constexpr std::array<DemBenchmarkScene, 4> kChungOoi = {{
     {"chung-ooi-2-magnesium", "Test 2", "Mg alloy sphere, R = 0.1 m, on a rigid plane, 0.2 m/s"},
 }};
 
+const DemReference& reference_of(const DemBenchmarkScene& t) {
+  for (const auto& ref : chung_ooi_references())
+    if (ref.benchmark.scene == t.scene) return ref;
+  throw std::logic_error("no Chung & Ooi reference for " + std::string(t.scene));
+}
+
 Outcome chung_ooi(const DemBenchmarkScene& t, IntegratorKind k) {
-  const Scene s = load_scene(std::string(t.scene));
-  const DerivedParameters p = derive(s);
+  const DemReference& ref = reference_of(t);
+  const Scene& s = ref.scene;
   const ImpactResult r = simulate(request(s, LawKind::hertz, k));
   WorstError w;
   if (!r.separated()) {
     w.fail(std::string(t.scene) + ": " + r.reason);
   } else {
-    const auto x = oracles::solve_hertz(p.effective_mass, p.K_h, s.velocity);
+    const oracles::HertzImpact& x = ref.closed_form;
     w.add(r.z_max, x.z_max, "maximum overlap");
     w.add(r.F_max, x.F_max, "peak force");
     w.add(r.t_contact, x.t_contact, "contact time");
@@ -96,7 +103,24 @@ Outcome chung_ooi_test3(bool tension) {
   return o;
 }
 
+DemReference compute_reference(const DemBenchmarkScene& t) {
+  DemReference ref{t, load_scene(std::string(t.scene)), {}, {}};
+  ref.derived = derive(ref.scene);
+  ref.closed_form =
+      oracles::solve_hertz(ref.derived.effective_mass, ref.derived.K_h, ref.scene.velocity);
+  return ref;
+}
+
 }  // namespace
+
+const std::vector<DemReference>& chung_ooi_references() {
+  static const Study<std::vector<DemReference>> study("Chung & Ooi references", [] {
+    std::vector<DemReference> out;
+    for (const auto& t : kChungOoi) out.push_back(compute_reference(t));
+    return out;
+  });
+  return study.get();
+}
 
 std::span<const DemBenchmarkScene> chung_ooi_scenes() {
   return kChungOoi;

@@ -218,8 +218,8 @@ Outcome hard_cases() {
       }
       if (std::isnan(row.reference_e)) continue;
       ++compared;
-      const double units = std::abs(r.e - row.reference_e) /
-                           default_settings_tolerance(cell.integrator).value;
+      const double units =
+          std::abs(r.e - row.reference_e) / default_settings_tolerance(cell.integrator).value;
       if (!(units <= worst)) {
         worst = std::isnan(units) ? INFINITY : units;
         where = at + " (e = " + fmt(r.e, 12) + " vs " + fmt(row.reference_e, 12) + ")";

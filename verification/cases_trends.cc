@@ -80,9 +80,8 @@ Outcome slope_near_yield() {
   const UndampedCorStudy& st = undamped_cor_study();
   const double slope = st.at(15.0).slope_simulated;
   return absolute(slope, -0.257, 0.001,
-                  "central-difference slope at 15 v_y (v0 (1 +- " + fmt(st.log_step) +
-                      ")): " + fmt(slope, 5) +
-                      "; the limit -1/4 does not hold yet just above yield");
+                  "central-difference slope at 15 v_y (v0 (1 +- " + fmt(st.log_step) + ")): " +
+                      fmt(slope, 5) + "; the limit -1/4 does not hold yet just above yield");
 }
 
 Outcome undamped_simulated_is_closed_form() {
@@ -196,10 +195,10 @@ Outcome fall_outcome(const Fall& f, double error_of_e, const std::string& what) 
   if (!f.failed.empty())
     return at_least(-INFINITY, 2 * error_of_e, what + ": a run failed, " + f.failed);
   return at_least(f.smallest, 2 * error_of_e,
-                  what + ": smallest fall of e (units of v0) to the next larger zeta, up to the "
-                         "first capture, over " +
-                      std::to_string(f.pairs) + " pairs: " + fmt(f.smallest, 3) + " at " +
-                      f.where);
+                  what +
+                      ": smallest fall of e (units of v0) to the next larger zeta, up to the "
+                      "first capture, over " +
+                      std::to_string(f.pairs) + " pairs: " + fmt(f.smallest, 3) + " at " + f.where);
 }
 
 Outcome cor_falls_to_capture() {
@@ -457,7 +456,9 @@ Outcome thornton_same_exponent() {
   std::vector<const UndampedCorRow*> high;
   for (const auto& row : st.rows)
     if (row.ratio >= 100.0 * (1 - 1e-9)) high.push_back(&row);
-  const auto log_ratio = [](const UndampedCorRow* r) { return std::log(r->e_simulated / r->e_thornton); };
+  const auto log_ratio = [](const UndampedCorRow* r) {
+    return std::log(r->e_simulated / r->e_thornton);
+  };
   const double slope = (log_ratio(high.back()) - log_ratio(high.front())) /
                        (std::log(high.back()->ratio) - std::log(high.front()->ratio));
   Outcome o = absolute(slope, 0.0, 0.01,
@@ -508,9 +509,12 @@ Outcome damping_map(const std::string& name) {
                          "simulated Hunt-Crossley COR with mu from the " + name +
                              " map against the delivered e of reference_data/"
                              "hunt_crossley_mu_maps.csv");
-  Plot plot{"mu-map-" + name, "Delivered against target COR: " + name,
-            "target e",       "delivered e",
-            false,            false,
+  Plot plot{"mu-map-" + name,
+            "Delivered against target COR: " + name,
+            "target e",
+            "delivered e",
+            false,
+            false,
             {}};
   plot.series.push_back({name + " (simulated)", target, delivered, Series::Style::linespoints});
   plot.series.push_back({"target", {0.0, 1.0}, {0.0, 1.0}, Series::Style::dashed});
@@ -587,8 +591,7 @@ void register_published_trend_cases(Registry& reg) {
            "Fig. 14: at every v0 of 0.01-10 m/s, e falls with zeta (0-0.5) until capture", T,
            "each fall must exceed twice the error of e, N rtol = 1e-9 in units of v0 at rtol "
            "1e-12 (N < 1000 steps), to be resolved",
-           false,
-           fig14_falls_with_zeta});
+           false, fig14_falls_with_zeta});
   reg.add({"trend.paper.fig8-yield-strength",
            "Lower yield strength gives lower F_max and longer contact (Fig. 8)", T,
            "monotone over four S_y, each step resolved above 1e-6 relative", false,

@@ -65,6 +65,7 @@ UndampedCorStudy compute_undamped_cor() {
     }
     row.e_thornton = oracles::thornton_cor(1.0 / r);
     row.asymptote = undamped_cor_asymptote(r);
+    row.thornton_asymptote = oracles::thornton_asymptote(1.0 / r);
     row.tabulated = std::any_of(std::begin(kSlopeTableRatios), std::end(kSlopeTableRatios),
                                 [&](double x) { return same_ratio(r, x); });
     st.rows.push_back(row);
@@ -86,9 +87,10 @@ CorMapStudy compute_cor_map() {
   m.e.assign(m.zeta.size(), std::vector<double>(m.ratio.size()));
   for (std::size_t j = 0; j < m.zeta.size(); ++j)
     for (std::size_t i = 0; i < m.ratio.size(); ++i)
-      m.e[j][i] = trend_run(with(base, m.ratio[i] * vy, m.zeta[j]), LawKind::elastoplastic,
-                            "grid point v0 = " + fmt(m.ratio[i] * vy) + ", zeta = " + fmt(m.zeta[j]))
-                      .e;
+      m.e[j][i] =
+          trend_run(with(base, m.ratio[i] * vy, m.zeta[j]), LawKind::elastoplastic,
+                    "grid point v0 = " + fmt(m.ratio[i] * vy) + ", zeta = " + fmt(m.zeta[j]))
+              .e;
   return m;
 }
 
@@ -177,8 +179,7 @@ const UndampedCorRow& UndampedCorStudy::at(double ratio) const {
 }
 
 const UndampedCorStudy& undamped_cor_study() {
-  static const Study<UndampedCorStudy> study("undamped COR against v0/v_y",
-                                             compute_undamped_cor);
+  static const Study<UndampedCorStudy> study("undamped COR against v0/v_y", compute_undamped_cor);
   return study.get();
 }
 

@@ -34,19 +34,20 @@ double undamped_cor_asymptote(double velocity_ratio);
 // ---- the undamped COR against v0/v_y and its local slope: the one slope computation ---------
 
 struct UndampedCorRow {
-  double ratio = 0.0;              // v0/v_y [-]
-  double e_closed_form = 0.0;      // oracles::solve_undamped_elastoplastic (1 below v_y) [-]
-  double e_simulated = 0.0;        // trend_run, no dashpot [-]
-  double slope_closed_form = 0.0;  // d ln e/d ln v0 of the closed form, central difference [-]
-  double slope_simulated = 0.0;    // the same of the simulations [-]
-  double e_thornton = 0.0;         // oracles::thornton_cor(v_y/v0), Thornton's V_y = v_y [-]
-  double asymptote = 0.0;          // undamped_cor_asymptote(ratio) [-]
-  bool tabulated = false;          // one of the report's table rows (kSlopeTableRatios)
+  double ratio = 0.0;               // v0/v_y [-]
+  double e_closed_form = 0.0;       // oracles::solve_undamped_elastoplastic (1 below v_y) [-]
+  double e_simulated = 0.0;         // trend_run, no dashpot [-]
+  double slope_closed_form = 0.0;   // d ln e/d ln v0 of the closed form, central difference [-]
+  double slope_simulated = 0.0;     // the same of the simulations [-]
+  double e_thornton = 0.0;          // oracles::thornton_cor(v_y/v0), Thornton's V_y = v_y [-]
+  double asymptote = 0.0;           // undamped_cor_asymptote(ratio) [-]
+  double thornton_asymptote = 0.0;  // oracles::thornton_asymptote(v_y/v0): 1.185 r^{1/4} [-]
+  bool tabulated = false;           // one of the report's table rows (kSlopeTableRatios)
 };
 
 struct UndampedCorStudy {
-  double v_yield = 0.0;    // v_y of the Table 1 scene [m/s]
-  double log_step = 0.0;   // h: slopes are central differences over v0 (1 +- h) [-]
+  double v_yield = 0.0;              // v_y of the Table 1 scene [m/s]
+  double log_step = 0.0;             // h: slopes are central differences over v0 (1 +- h) [-]
   std::vector<UndampedCorRow> rows;  // ascending ratio; slopes NaN where v0 (1 - h) <= v_y
   // the closed form and Thornton's formula on 200 log-spaced ratios 0.5 ... 1e4 (curves)
   std::vector<double> curve_ratio, curve_e_closed_form, curve_e_thornton;
@@ -63,8 +64,8 @@ const UndampedCorStudy& undamped_cor_study();
 // ---- e(v0, zeta) above yield: the monotone map ------------------------------------------------
 
 struct CorMapStudy {
-  std::vector<double> ratio;  // v0/v_y, 30 log-spaced in [1.5, 100]
-  std::vector<double> zeta;   // 0 ... 0.25 (10 values)
+  std::vector<double> ratio;           // v0/v_y, 30 log-spaced in [1.5, 100]
+  std::vector<double> zeta;            // 0 ... 0.25 (10 values)
   std::vector<std::vector<double>> e;  // e[i_zeta][i_ratio]
 };
 // Table 1 scene, damping ratio zeta, odeint-dopri5 at kTrendRtol. Up to zeta = 0.25: beyond
@@ -76,8 +77,8 @@ const CorMapStudy& cor_map_study();
 // ---- e against zeta at fixed v0, up to capture ------------------------------------------------
 
 struct CorZetaStudy {
-  std::vector<double> velocities;  // 0.1, 1, 5 m/s
-  std::vector<double> zetas;       // 30 log-spaced in [0.01, 10]
+  std::vector<double> velocities;               // 0.1, 1, 5 m/s
+  std::vector<double> zetas;                    // 30 log-spaced in [0.01, 10]
   std::vector<std::vector<ImpactResult>> runs;  // runs[i_v0][i_zeta]
   // the linearized closed form (eqs 22-25) on 120 log-spaced zeta in [0.01, 10]; NaN where
   // the linearized law is undefined (loading stops below 2.25 z_y)
@@ -93,10 +94,10 @@ const CorZetaStudy& cor_zeta_study();
 
 struct DampingMapPoint {
   double e_target = 0.0;
-  double mu = 0.0;             // the map's mu at v0 = 1 m/s [s/m]
-  double e_exact = 0.0;        // oracles::delivered_cor (exact relation, Lambert W)
-  double e_table = 0.0;        // reference_data/hunt_crossley_mu_maps.csv e_delivered
-  ImpactResult simulated;      // Hunt-Crossley, K = K_h, no dashpot, v0 = 1 m/s
+  double mu = 0.0;         // the map's mu at v0 = 1 m/s [s/m]
+  double e_exact = 0.0;    // oracles::delivered_cor (exact relation, Lambert W)
+  double e_table = 0.0;    // reference_data/hunt_crossley_mu_maps.csv e_delivered
+  ImpactResult simulated;  // Hunt-Crossley, K = K_h, no dashpot, v0 = 1 m/s
 };
 struct DampingMapCurve {
   std::string name, formula;

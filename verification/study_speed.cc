@@ -67,9 +67,9 @@ std::vector<HardCaseRow> compute_hard_cases() {
   {
     SimulationRequest r;
     r.scene = paper_at(100.0, Damping::none());
-    const double e =
-        oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(r.scene, derive(r.scene)))
-            .e;
+    const double e = oracles::solve_undamped_elastoplastic(
+                         oracles::elastoplastic_input(r.scene, derive(r.scene)))
+                         .e;
     specs.push_back({{"fast",
                       "paper scene, v0 = 100 m/s, no dashpot: deep in the plastic range",
                       e,
@@ -139,8 +139,8 @@ const bench::ConvergenceStudy& FixedStepConvergenceStudy::of(IntegratorKind k,
 }
 
 const FixedStepConvergenceStudy& fixed_step_convergence_study() {
-  static const Study<FixedStepConvergenceStudy> study(
-      "fixed-step convergence of rk4 and dp45", compute_convergence);
+  static const Study<FixedStepConvergenceStudy> study("fixed-step convergence of rk4 and dp45",
+                                                      compute_convergence);
   return study.get();
 }
 

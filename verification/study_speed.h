@@ -40,10 +40,10 @@ struct HardCaseCell {
 };
 
 struct HardCaseRow {
-  std::string name;              // e.g. "stiff dashpot"
-  std::string description;       // plain text: the scene and what makes it hard
-  double reference_e = 0.0;      // an independent value of e (NaN: none in closed form)
-  std::string reference_source;  // where reference_e comes from
+  std::string name;                 // e.g. "stiff dashpot"
+  std::string description;          // plain text: the scene and what makes it hard
+  double reference_e = 0.0;         // an independent value of e (NaN: none in closed form)
+  std::string reference_source;     // where reference_e comes from
   std::vector<HardCaseCell> cells;  // one per production integrator
 };
 const std::vector<HardCaseRow>& hard_case_study();

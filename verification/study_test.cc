@@ -53,11 +53,12 @@ TEST(Study, FailureIsNamedForEveryReaderAndNotRecomputed) {
 }
 
 TEST(Study, AFailedStudyIsAFailedCaseWithItsReason) {
-  static const Study<double> failing("broken study", []() -> double {
-    throw std::runtime_error("the reference failed");
-  });
-  const Case c{"unit.reads-broken-study", "reads a failed study", Tier::analytic, "none", false,
-               [] { return relative(failing.get(), 1.0, 1e-9, "value"); }};
+  static const Study<double> failing(
+      "broken study", []() -> double { throw std::runtime_error("the reference failed"); });
+  const Case c{
+      "unit.reads-broken-study", "reads a failed study", Tier::analytic, "none", false, [] {
+        return relative(failing.get(), 1.0, 1e-9, "value");
+      }};
   const CaseRecord r = run_case(c);
   EXPECT_FALSE(r.outcome.passed);
   EXPECT_NE(r.outcome.detail.find("study 'broken study' failed: the reference failed"),
