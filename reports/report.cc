@@ -649,7 +649,9 @@ ReportSummary write_report(const ReportOptions& opt) {
       "Visco-elastoplastic impact model: verification cases, the paper's figures, "
       "restitution trends and speed against error. Generated " +
       escape(prov.date_utc) + " from commit <code>" + escape(prov.git_commit.substr(0, 12)) +
-      "</code>.</p></header>\n";
+      "</code>. Every figure and table says where its numbers come from: the verification "
+      "cases whose measurements it shows, or the label <i>Illustration</i> or <i>Timing, "
+      "information only</i>.</p></header>\n";
   body +=
       "<nav class=\"toc\"><b>Contents</b><ol>"
       "<li><a href=\"#summary\">Summary</a></li>"

@@ -1,5 +1,5 @@
 // Unit tests of the report's parts: HTML helpers, gnuplot SVG rendering and its check, the
-// machine-readable companions, the restitution asymptote, write_report's input errors, and
+// machine-readable companions, write_report's input errors, and
 // that every figure and table of a rendered report names its cases or is labelled.
 #include <gtest/gtest.h>
 
@@ -14,14 +14,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "oracles/undamped_elastoplastic.h"
 #include "reports/companions.h"
 #include "reports/dem_benchmark.h"
 #include "reports/gnuplot_svg.h"
 #include "reports/html.h"
 #include "reports/paper_figures.h"
 #include "reports/report.h"
-#include "reports/restitution.h"
 #include "solver/input_error.h"
 #include "solver/scene.h"
 #include "verification/cases.h"
@@ -188,20 +186,6 @@ TEST(Companions, SeriesCsvIsLongFormatWithQuoting) {
   EXPECT_NE(csv.find("unit,a's curve,2,4\n"), std::string::npos);
   EXPECT_NE(csv.find("unit,\"b, \"\"quoted\"\"\",3,4\n"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 8);
-}
-
-TEST(Restitution, ClosedFormApproachesTheDerivedAsymptote) {
-  // e -> (15/8)^{1/8} (v0/v_y)^{-1/4}; the first correction is O((v0/v_y)^{-1/2}) relative,
-  // 1e-3 at 1e6 v_y (the report's table shows 1.001 at 1e4 v_y).
-  Scene s = paper_scene();
-  const double v_y = derive(s).v_yield;
-  for (double ratio : {1e6, 1e8}) {
-    s.velocity = ratio * v_y;
-    const double e =
-        oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
-    EXPECT_NEAR(e / verification::undamped_cor_asymptote(ratio), 1.0, 1e-3) << "v0/v_y = " << ratio;
-  }
-  EXPECT_NEAR(verification::undamped_cor_asymptote(1.0), std::pow(15.0 / 8.0, 0.125), 1e-15);
 }
 
 TEST(PaperFigures, ParametersNameTheDashpotAndDamping) {

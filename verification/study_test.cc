@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <thread>
 #include <vector>
 
+#include "oracles/undamped_elastoplastic.h"
 #include "verification/registry.h"
 #include "verification/study_restitution.h"
 
@@ -82,6 +84,20 @@ TEST(UndampedCorStudy, HasTheTableRowsAndSlopesAboveYield) {
   EXPECT_NEAR(st.at(15.0).slope_simulated, -0.257, 1e-3);
   EXPECT_THROW(st.at(16.0), std::out_of_range);
   EXPECT_EQ(&undamped_cor_study(), &st) << "computed once per process";
+}
+
+TEST(UndampedCorStudy, ClosedFormApproachesTheDerivedAsymptote) {
+  // e -> (15/8)^{1/8} (v0/v_y)^{-1/4}; the first correction is O((v0/v_y)^{-1/2}) relative,
+  // 1e-3 at 1e6 v_y (the report's table shows 1.001 at 1e4 v_y).
+  Scene s = paper_scene();
+  const double v_y = derive(s).v_yield;
+  for (double ratio : {1e6, 1e8}) {
+    s.velocity = ratio * v_y;
+    const double e =
+        oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(s, derive(s))).e;
+    EXPECT_NEAR(e / undamped_cor_asymptote(ratio), 1.0, 1e-3) << "v0/v_y = " << ratio;
+  }
+  EXPECT_NEAR(undamped_cor_asymptote(1.0), std::pow(15.0 / 8.0, 0.125), 1e-15);
 }
 
 }  // namespace
