@@ -286,7 +286,7 @@ std::vector<Figure> paper_figures(const SectionOptions& options) {
       std::to_string(st.fig14_velocities.size()) +
       " velocities log-spaced in [0.01, 10] m/s. Below v<sub>y</sub> = " + number(d.v_yield, 4) +
       " m/s the undamped impact is elastic (e = 1); e falls with ζ until "
-      "capture (paper §3; the case below checks it at every v<sub>0</sub> "
+      "capture (paper §3; the case named above checks it at every v<sub>0</sub> "
       "drawn) and with v<sub>0</sub> above yield (case "
       "<code>trend.cor-falls-with-v0</code>, on its own grid).";
   if (failed > 0) caption += " " + std::to_string(failed) + " points failed and are not drawn.";
