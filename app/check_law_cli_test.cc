@@ -71,6 +71,24 @@ TEST(CheckLaw, JsonHasTheContractKeysAndTheClaimIsJudged) {
   EXPECT_TRUE(found);
 }
 
+// A law with a fixed plastic loss (unloading to z_f = zmax/2 at every speed: e independent of
+// v0) is not elastic at low speed; the claim must fail, and a Hertz law's must pass.
+TEST(CheckLaw, ElasticAtLowSpeedIsJudged) {
+  auto low_speed = [](const std::string& args) {
+    const CliRun r = ivv("check-law " + args + " --elastic-at-low-speed --json");
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& c : j["checks"])
+      if (c["id"] == "dynamic.low_speed") return c;
+    ADD_FAILURE() << "no dynamic.low_speed in " << r.out;
+    return nlohmann::json{};
+  };
+  const auto plastic =
+      low_speed("--force 'K_h*z^1.5' --unload 'K_h*(z^1.5 - (zmax/2)^1.5)' --scene paper");
+  EXPECT_FALSE(plastic["passed"].get<bool>()) << plastic.dump();
+  const auto hertz = low_speed("--force 'K_h*z^1.5' --scene paper");
+  EXPECT_TRUE(hertz["passed"].get<bool>()) << hertz.dump();
+}
+
 TEST(CheckLaw, ReportWritesASelfContainedPage) {
   const fs::path dir =
       fs::temp_directory_path() / ("ivv_check_law_report_" + std::to_string(getpid()));

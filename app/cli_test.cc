@@ -354,4 +354,18 @@ TEST(Cli, IntegratorFailureExitsOneWithReason) {
   EXPECT_NE(r.out.find("implicit integrator"), std::string::npos) << r.out;
 }
 
+// Issue 10 item 6: a failed run prints null for the outcome, never a plausible e = 0.
+TEST(Cli, FailedRunPrintsNullOutcome) {
+  const CliRun r =
+      ivv("simulate --scene paper --zeta 1000 --integrator rk4 --max-steps 1000 --json");
+  EXPECT_EQ(r.exit_code, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["result"]["status"], "failed");
+  for (const char* key : {"e", "e_poisson", "e_energetic", "F_max", "t_contact", "z_perm"})
+    EXPECT_TRUE(j["result"][key].is_null()) << key << " = " << j["result"][key];
+  EXPECT_TRUE(j["result"]["energy"]["residual"].is_null());
+  EXPECT_FALSE(j["result"]["reason"].get<std::string>().empty());
+  EXPECT_GT(j["result"]["steps"].get<long>(), 0);
+}
+
 }  // namespace

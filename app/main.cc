@@ -29,8 +29,8 @@
 #include "solver/atomic_file.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/input_error.h"
-#include "solver/integrator_choice.h"
 #include "solver/integrator_accuracy.h"
+#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/conformance.h"
@@ -68,8 +68,9 @@ std::optional<double> number(const std::optional<std::string>& text, const std::
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
                      bool scene_required = true) {
-  auto* scene = cmd.add_option(
-      "--scene", f.scene, "scene file (TOML, SPEC §5), 'paper' (Table 1), or a shipped scene's name");
+  auto* scene =
+      cmd.add_option("--scene", f.scene,
+                     "scene file (TOML, SPEC §5), 'paper' (Table 1), or a shipped scene's name");
   if (scene_required) scene->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
@@ -681,7 +682,7 @@ int main(int argc, char** argv) {
                         "the COR the law is meant to deliver: an expression in v0, the scene's "
                         "constants and --param names");
   check_law->add_option("--cor-tolerance", check.cor_tolerance,
-                        "allowed |e - expected| (default 1e-6: 100x the integration error)");
+                        "allowed |e - expected| (default 1e-9: 10x the reference's error of e)");
   check_law->add_flag("--elastic-at-low-speed", check.elastic_at_low_speed,
                       "claim e -> 1 as v0 -> 0 (checked)");
   check_law->add_flag("--no-monotone", check.no_monotone,
@@ -728,7 +729,8 @@ int main(int argc, char** argv) {
           std::cout << "\torder " << t.order << (t.implicit ? ", implicit" : ", explicit")
                     << (t.dense_output ? ", dense output" : ", Hermite interpolant")
                     << (t.fixed_step ? ", fixed step" : ", adaptive")
-                    << (t.reference ? ", reference" : "") << "\t" << t.description << "\n\t  accuracy: " << accuracy_statement(t.kind);
+                    << (t.reference ? ", reference" : "") << "\t" << t.description
+                    << "\n\t  accuracy: " << accuracy_statement(t.kind);
         std::cout << "\n";
       }
       return 0;

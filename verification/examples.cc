@@ -93,8 +93,8 @@ const ExampleRun& thornton_example() {
     claims.expected_cor = [V_y](double v0) { return oracles::thornton_cor(V_y / v0); };
     claims.expected_cor_text = "Thornton's e(V_y/v0), V_y = " + fmt(V_y) + " m/s";
     claims.cor_tolerance_reason =
-        "Thornton integrated his law exactly, so the miss is the integration error of e at "
-        "rtol 1e-10 (<= 1e-8); 1e-6 leaves a factor 100";
+        "Thornton integrated his law exactly, so the miss is the reference's error of e (mp50, "
+        "~1e-12); 1e-9 is the default bound for an exact claim";
     ExampleRun run{"thornton", "Thornton's elastic-perfectly-plastic law (C++)", "", {}, 0.0};
     run.report = conformance::run_conformance(law, claims, grid_on_paper());
     return run;

@@ -1,6 +1,7 @@
 // Contact laws by regime: loading, the yield kink, unloading, separation, history.
 #include <gtest/gtest.h>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 
 #include "solver/laws/elastoplastic.h"
@@ -94,6 +95,48 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
                       simpson(unloading, b.z_perm, z_m, 20000);
   EXPECT_NEAR(*law.hysteresis_work(b), area, 1e-9 * area);
   EXPECT_GT(area, 0.0);
+}
+
+// Far above yield the unloading force and the stored energy are small differences of large
+// numbers (K_h z^{3/2} - K_h z_f^{3/2}); written that way they lost sqrt(z_m/z_y) of their
+// relative accuracy (issue 10: ~1e23 J wrong at v0 = 1e16 m/s). Reference: the textbook
+// (cancelling) formulas evaluated in 50 digits, which absorb the loss. Tolerance: the factored
+// forms have only same-sign terms, so a few ulps per operation: 1e-13 relative.
+TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  for (double ratio : {3.0, 1e4, 1e8, 1e12, 1e16}) {
+    const double z_m = ratio * p.z_y;
+    ElastoplasticLaw::History<double> b;
+    law.next_segment(b);
+    law.begin_unloading(b, z_m);
+    const mp Kh = p.K_h, zy = p.z_y, zm = z_m;
+    const mp F_m = p.K_y * (zm - zy) + Kh * zy * sqrt(zy);
+    const mp zf15 = zm * sqrt(zm) - F_m / Kh;
+    const mp zf = cbrt(zf15 * zf15);
+    const mp span = zm - zf;
+    EXPECT_NEAR(b.z_perm, static_cast<double>(zf), 1e-13 * z_m) << ratio;
+    EXPECT_NEAR(b.unloading_span, static_cast<double>(span), 1e-13 * static_cast<double>(span))
+        << ratio;
+    for (double frac : {1.0, 0.5, 1e-3}) {  // z = z_f + frac (z_m - z_f)
+      const double z = static_cast<double>(zf + frac * span);
+      const mp zz = z;
+      const mp force = Kh * (zz * sqrt(zz) - zf15);
+      const mp energy =
+          0.4 * Kh * (zz * zz * sqrt(zz) - zf * zf * sqrt(zf)) - Kh * zf15 * (zz - zf);
+      // z - z_f is formed as (z - z_m) + (z_m - z_f): a few ulps of z_m in absolute terms,
+      // which is also what the double state z carries near z_f (4 ulps: 4.4e-16 z_m)
+      const double dz = z_m * 4.4e-16;
+      const double slack = 1.5 * p.K_h * std::sqrt(z) * dz;
+      EXPECT_NEAR(law.force(b, z, 0.0), static_cast<double>(force),
+                  1e-13 * static_cast<double>(force) + slack)
+          << ratio << " " << frac;
+      EXPECT_NEAR(law.stored_energy(b, z), static_cast<double>(energy),
+                  1e-13 * static_cast<double>(energy) + static_cast<double>(force) * dz)
+          << ratio << " " << frac;
+    }
+  }
 }
 
 TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
