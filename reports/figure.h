@@ -19,7 +19,7 @@ struct Figure {
 };
 
 struct SectionOptions {
-  bool quick = false;  // fewer sweep points (tests); the figures keep their meaning
+  bool quick = false;  // fewer benchmark points (tests); studies are the same in both modes
   int threads = 0;     // for sweeps: 0 = all hardware threads
   std::function<void(const std::string&)> progress;  // one line per stage; may be empty
   void say(const std::string& line) const {

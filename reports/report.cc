@@ -237,7 +237,7 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
   item("run time",
        number(total, 3) + " s (" + stages + "), " +
            std::to_string(worker_count(std::numeric_limits<std::size_t>::max(), opt.threads)) +
-           " threads" + (opt.quick ? ", quick mode (fewer sweep points)" : ""));
+           " threads" + (opt.quick ? ", quick mode (fewer benchmark points)" : ""));
   out += "</dl>\n";
   return out;
 }

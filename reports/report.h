@@ -27,7 +27,7 @@ struct ReportOptions {
   bool allow_failures = false;    // recorded in the summary; the caller decides the exit code
   std::string command_line;       // for provenance
   std::function<void(const std::string&)> progress;  // one line per stage and per case
-  bool quick = false;  // fewer sweep and bench points (tests); same sections
+  bool quick = false;  // fewer benchmark points (tests); same sections and studies
 };
 
 struct ReportSummary {

@@ -9,8 +9,6 @@
 #include "oracles/linear_model.h"
 #include "oracles/published.h"
 #include "oracles/reference_tables.h"
-#include "solver/fit_hunt_crossley.h"
-#include "solver/sweep.h"
 #include "verification/cases.h"
 #include "verification/study_paper.h"
 #include "verification/study_restitution.h"
