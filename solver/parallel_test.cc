@@ -60,7 +60,9 @@ TEST_P(ParallelForThreads, ExceptionReachesTheCallerWithItsIndex) {
   // The other workers stop taking work once the failure is recorded. With one thread that is
   // exact; with several, a worker preempted between its throw and the stop flag lets the others
   // run on (seen under load): promptness is asserted where it is deterministic.
-  if (GetParam() == 1) EXPECT_EQ(started.load(), bad + 1);
+  if (GetParam() == 1) {
+    EXPECT_EQ(started.load(), bad + 1);
+  }
 }
 
 TEST_P(ParallelForThreads, ProgressCountsEveryItemInOrder) {
