@@ -11,13 +11,6 @@ namespace {
 using verification::Plot;
 using verification::Series;
 
-Scene paper_with(double v0, Damping damping) {
-  Scene s = paper_scene();
-  s.velocity = v0;
-  s.damping = damping;
-  return s;
-}
-
 std::string machine_text(const bench::MachineInfo& m) {
   return escape(m.cpu_model) + ", " + std::to_string(m.logical_cores) + " logical cores, " +
          escape(m.compiler) + ", " + escape(m.build_type) + " build";
@@ -87,7 +80,7 @@ void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::s
       caption += " " + std::to_string(failed) +
                  " points failed or ended in another status than the reference and are not drawn "
                  "(see the table).";
-    out.push_back({p, caption, false, Source::timing({"cross.*"})});
+    out.push_back({p, caption, false, Source::timing({"convergence.work-precision"})});
   }
 }
 
@@ -95,64 +88,18 @@ void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::s
 
 SpeedSection speed_section(const SectionOptions& options) {
   SpeedSection out;
-  out.machine = bench::describe_machine();
 
-  bench::WorkPrecisionOptions wp;
-  if (options.quick) {
-    wp.rtols = {1e-4, 1e-7, 1e-10};
-    wp.rk4_steps = {1e-1, 1e-2, 1e-3};
-    wp.min_seconds_per_point = 0.002;
-    wp.min_repeats = 1;
-  }
-  struct StudySpec {
-    std::string id, label;
-    double zeta;
-  };
-  for (const StudySpec& spec :
-       {StudySpec{"paper", "paper scene, v0 = 1 m/s, ζ = 0.1 (elastoplastic)", 0.1},
-        StudySpec{"stiff", "stiff dashpot, v0 = 1 m/s, ζ = 10 (elastoplastic)", 10.0}}) {
-    options.say("speed: work-precision study '" + spec.label + "' (mp50 reference, then " +
-                "every integrator and tolerance, single-threaded)");
-    SimulationRequest base;
-    base.scene = paper_with(1.0, Damping::ratio(spec.zeta));
-    // quick (tests): a 1e-20 reference still resolves the >= 1e-16 errors of double precision
-    if (options.quick) base.options.reference_tolerance = 1e-20;
-    bench::WorkPrecisionOptions o = wp;
-    std::size_t last_tenth = 0;
-    o.progress = [&](std::size_t done, std::size_t total) {
-      const std::size_t tenth = 10 * done / std::max<std::size_t>(total, 1);
-      if (tenth != last_tenth) {
-        last_tenth = tenth;
-        options.say("speed:   " + std::to_string(done) + "/" + std::to_string(total) + " points");
-      }
-    };
-    out.studies.push_back(bench::measure_work_precision(spec.label, base, o));
-    std::vector<bench::BenchPoint> peers;
-    if (spec.id == "paper") {
-      options.say("speed: the peers (GSL rk8pd driver, odeint dense dopri5) on the paper scene");
-      out.peers = bench::measure_peers(wp.rtols, out.studies.back().reference,
-                                       wp.min_seconds_per_point, wp.min_repeats);
-      std::vector<bench::BenchPoint> ivv_points;
-      for (const auto& s : out.studies.back().series)
-        for (const auto& pt : s.points) {
-          bench::BenchPoint b;
-          b.integrator = std::string(to_string(s.integrator));
-          b.law = "elastoplastic";
-          b.scene = bench::scene_label(1.0, 0.1);
-          b.rtol = pt.tolerance;
-          b.ok = pt.ok;
-          b.err_e = pt.error_e;
-          b.err_F = pt.error_F_max;
-          b.err_t = pt.error_t_contact;
-          b.us_per_impact = pt.seconds_per_impact * 1e6;
-          b.rhs_evals = pt.rhs_evaluations;
-          ivv_points.push_back(b);
-        }
-      out.ratios = bench::ratio_table(ivv_points, out.peers);
-      peers = out.peers;
-    }
-    work_precision_figures(out.studies.back(), spec.id, peers, out.figures);
-  }
+  options.say(std::string("speed: work-precision studies (mp50 reference, then every integrator ") +
+              "and tolerance, single-threaded; the peers) - the study the cases read");
+  const verification::WorkPrecisionStudies& wp = verification::work_precision_study(options.quick);
+  out.machine = wp.machine;
+  out.studies = wp.studies;
+  out.peers = wp.peers;
+  out.ratios = wp.ratios;
+  for (std::size_t i = 0; i < wp.studies.size(); ++i)
+    work_precision_figures(wp.studies[i], wp.ids[i],
+                           wp.ids[i] == "paper" ? wp.peers : std::vector<bench::BenchPoint>{},
+                           out.figures);
 
   options.say("speed: convergence of rk4 and dp45 (fixed step), from the study the cases read");
   {

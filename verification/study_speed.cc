@@ -150,4 +150,64 @@ const std::vector<HardCaseRow>& hard_case_study() {
   return study.get();
 }
 
+namespace {
+
+WorkPrecisionStudies compute_work_precision(bool quick) {
+  WorkPrecisionStudies out;
+  out.machine = bench::describe_machine();
+  bench::WorkPrecisionOptions wp;
+  if (quick) {
+    wp.rtols = {1e-4, 1e-7, 1e-10};
+    wp.rk4_steps = {1e-1, 1e-2, 1e-3};
+    wp.min_seconds_per_point = 0.002;
+    wp.min_repeats = 1;
+  }
+  struct Spec {
+    const char* id;
+    const char* label;
+    double zeta;
+  };
+  for (const Spec& spec :
+       {Spec{"paper", "paper scene, v0 = 1 m/s, ζ = 0.1 (elastoplastic)", 0.1},
+        Spec{"stiff", "stiff dashpot, v0 = 1 m/s, ζ = 10 (elastoplastic)", 10.0}}) {
+    SimulationRequest base;
+    base.scene = paper_at(1.0, Damping::ratio(spec.zeta));
+    // quick: a 1e-20 reference still resolves the >= 1e-16 errors of double precision
+    if (quick) base.options.reference_tolerance = 1e-20;
+    out.studies.push_back(bench::measure_work_precision(spec.label, base, wp));
+    out.ids.push_back(spec.id);
+    if (std::string(spec.id) != "paper") continue;
+    out.peers = bench::measure_peers(wp.rtols, out.studies.back().reference,
+                                     wp.min_seconds_per_point, wp.min_repeats);
+    std::vector<bench::BenchPoint> ivv_points;
+    for (const auto& series : out.studies.back().series)
+      for (const auto& pt : series.points) {
+        bench::BenchPoint b;
+        b.integrator = std::string(to_string(series.integrator));
+        b.law = "elastoplastic";
+        b.scene = bench::scene_label(1.0, 0.1);
+        b.rtol = pt.tolerance;
+        b.ok = pt.ok;
+        b.err_e = pt.error_e;
+        b.err_F = pt.error_F_max;
+        b.err_t = pt.error_t_contact;
+        b.us_per_impact = pt.seconds_per_impact * 1e6;
+        b.rhs_evals = pt.rhs_evaluations;
+        ivv_points.push_back(b);
+      }
+    out.ratios = bench::ratio_table(ivv_points, out.peers);
+  }
+  return out;
+}
+
+}  // namespace
+
+const WorkPrecisionStudies& work_precision_study(bool quick) {
+  static const Study<WorkPrecisionStudies> full("work-precision",
+                                                [] { return compute_work_precision(false); });
+  static const Study<WorkPrecisionStudies> fast("work-precision (quick)",
+                                                [] { return compute_work_precision(true); });
+  return quick ? fast.get() : full.get();
+}
+
 }  // namespace ivv::verification

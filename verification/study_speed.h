@@ -14,11 +14,21 @@
 //     exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of each
 //     run is recorded as information only: it is measured while other cases may run on other
 //     threads, and nothing is ever judged on it.
+//   * work_precision_study(quick): the work-precision diagrams (bench::measure_work_precision)
+//     on the Table 1 scene at v0 = 1 m/s, zeta = 0.1 and on a stiff dashpot (zeta = 10), every
+//     double-precision integrator over rtol = atol 1e-4 ... 1e-13 (rk4: dt 0.1 ... 1e-4 in tau),
+//     errors against the mp50 reference; and the peers (bench/peers.h) on the paper scene with
+//     the ratio table. The errors are judged by convergence.work-precision (each point's
+//     error of e within the accumulated tolerance bound of solver/consistency.h); the times
+//     are information only (medians of repeated single-threaded runs, taken while other cases
+//     may run). quick = true: rtol 1e-4, 1e-7, 1e-10, one timed run per point, reference at
+//     1e-20 (the report's test mode); the cases read the full study.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "bench/speed_bench.h"
 #include "bench/work_precision.h"
 #include "solver/simulate.h"
 
@@ -47,5 +57,16 @@ struct HardCaseRow {
   std::vector<HardCaseCell> cells;  // one per production integrator
 };
 const std::vector<HardCaseRow>& hard_case_study();
+
+struct WorkPrecisionStudies {
+  std::vector<bench::WorkPrecisionStudy> studies;  // "paper" (zeta = 0.1), then "stiff" (10)
+  std::vector<std::string> ids;                    // "paper", "stiff"
+  // The peers on the paper study's scene and tolerances, and per error level ivv's best time
+  // against each peer's (bench::ratio_table): timings, information only.
+  std::vector<bench::BenchPoint> peers;
+  std::vector<bench::RatioRow> ratios;
+  bench::MachineInfo machine;
+};
+const WorkPrecisionStudies& work_precision_study(bool quick = false);
 
 }  // namespace ivv::verification
