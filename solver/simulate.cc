@@ -84,6 +84,10 @@ void validate(const IntegratorOptions& options) {
 }
 
 void validate(const SimulationRequest& req) {
+  const ValidatedRequest checked(req);
+}
+
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req) {
   validate(req.scene);
   validate(req.options);
   validate_parameters(req.law, req.parameters);
@@ -100,9 +104,12 @@ void validate(const SimulationRequest& req) {
                                     "; give one or the other");
   if (req.law == LawKind::expression && req.expression.force.empty())
     throw InputError("--force", "the expression law needs a force expression");
+  derived_ = derive(req.scene);
   bool rate_dependent = law.rate_dependent;
-  if (req.law == LawKind::expression)
-    rate_dependent = detail::compile_expression_law(req, derive(req.scene))->uses_rate();
+  if (req.law == LawKind::expression) {
+    expression_ = detail::compile_expression_law(req, derived_);  // once: the run uses it too
+    rate_dependent = expression_->uses_rate();
+  }
   if (rate_dependent && req.scene.damping.kind != Damping::Kind::none) {
     throw InputError(
         req.scene.damping.kind == Damping::Kind::ratio ? "--zeta" : "--c",
@@ -110,6 +117,11 @@ void validate(const SimulationRequest& req) {
                                                    : "the " + std::string(law.name) + " law") +
             " carries its own damping and runs without the series dashpot");
   }
+}
+
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req, Trusted)
+    : request_(&req), derived_(derive(req.scene)) {
+  if (req.law == LawKind::expression) expression_ = detail::compile_expression_law(req, derived_);
 }
 
 namespace detail {
@@ -121,25 +133,25 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 
 namespace {
 
-ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
-                      std::vector<TrajectoryPoint>* trajectory) {
+ImpactResult dispatch(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  const SimulationRequest& req = v.request();
   switch (req.integrator) {
     case IntegratorKind::odeint_dopri5:
-      return detail::simulate_odeint_dopri5(req, p, trajectory);
+      return detail::simulate_odeint_dopri5(v, trajectory);
     case IntegratorKind::odeint_rosenbrock4:
-      return detail::simulate_odeint_rosenbrock4(req, p, trajectory);
+      return detail::simulate_odeint_rosenbrock4(v, trajectory);
     case IntegratorKind::rk4:
-      return detail::simulate_rk4(req, p, trajectory);
+      return detail::simulate_rk4(v, trajectory);
     case IntegratorKind::dp45:
-      return detail::simulate_dp45(req, p, trajectory);
+      return detail::simulate_dp45(v, trajectory);
     case IntegratorKind::dop853:
-      return detail::simulate_dop853(req, p, trajectory);
+      return detail::simulate_dop853(v, trajectory);
     case IntegratorKind::gsl_rk8pd:
-      return detail::simulate_gsl_rk8pd(req, p, trajectory);
+      return detail::simulate_gsl_rk8pd(v, trajectory);
     case IntegratorKind::gsl_msbdf:
-      return detail::simulate_gsl_msbdf(req, p, trajectory);
+      return detail::simulate_gsl_msbdf(v, trajectory);
     case IntegratorKind::mp50:
-      return detail::simulate_mp50(req, p, trajectory);
+      return detail::simulate_mp50(v, trajectory);
   }
   ImpactResult r;
   r.failure = FailureKind::integrator;
@@ -151,9 +163,12 @@ ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
 }  // namespace
 
 ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>* trajectory) {
-  validate(req);
-  const DerivedParameters p = derive(req.scene);
-  ImpactResult r = dispatch(req, p, trajectory);
+  return simulate(ValidatedRequest(req), trajectory);
+}
+
+ImpactResult simulate(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  const SimulationRequest& req = v.request();
+  ImpactResult r = dispatch(v, trajectory);
   // A failure always says why: one that reached here without a reason is named as such.
   if (!r.ok() && r.reason.empty()) {
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;

@@ -5,6 +5,7 @@
 // per evaluation.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -41,13 +42,47 @@ struct TrajectoryPoint {
   double tau, alpha_bar, force_bar;         // [-]
 };
 
+struct SweepRequest;
+
+// A request that passed the one validation, with what validation had to compute kept for the
+// run, so an impact validates once and compiles its expression law once: the derived
+// parameters and, for an expression law, the compiled law (validation compiles it to learn
+// whether it uses zdot; the run uses the same). Refers to the request, which must outlive it.
+class ValidatedRequest {
+ public:
+  // Runs every check of validate(request); throws InputError naming the field.
+  explicit ValidatedRequest(const SimulationRequest& request);
+  ValidatedRequest(SimulationRequest&&) = delete;  // would refer to a temporary
+
+  const SimulationRequest& request() const { return *request_; }
+  const DerivedParameters& derived() const { return derived_; }
+  // The compiled expression law; null unless request().law == LawKind::expression.
+  const std::shared_ptr<const CompiledExpressions>& expression() const { return expression_; }
+
+  // Point `index` of a grid that validate(SweepRequest) accepted (`point` = its
+  // point_request()): the grid's checks cover every point (v0 and zeta enter the derived
+  // scales separately, and each is checked), so only the point's expression law is compiled.
+  static ValidatedRequest grid_point(const SweepRequest& grid, const SimulationRequest& point);
+
+ private:
+  struct Trusted {};
+  ValidatedRequest(const SimulationRequest& request, Trusted);
+  const SimulationRequest* request_;
+  DerivedParameters derived_;
+  std::shared_ptr<const CompiledExpressions> expression_;
+};
+
 // Validates the request (InputError naming the field) and runs it. Failures of the
 // integration or of the law's domain come back in ImpactResult::status/failure/reason.
 // `trajectory`, when given, receives samples along the solution (several per step).
 ImpactResult simulate(const SimulationRequest& request,
                       std::vector<TrajectoryPoint>* trajectory = nullptr);
+// Runs a request validated before (no check repeated).
+ImpactResult simulate(const ValidatedRequest& request,
+                      std::vector<TrajectoryPoint>* trajectory = nullptr);
 
-// Throws InputError for invalid options or an incompatible combination.
+// Throws InputError for invalid options or an incompatible combination: the one validation
+// of a request (ValidatedRequest's constructor), called by every entry point.
 void validate(const SimulationRequest& request);
 // Throws InputError naming the option (--rtol, --atol, --dt, --max-steps) when out of range.
 void validate(const IntegratorOptions& options);
