@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "solver/input_error.h"
+#include "solver/integrator_choice.h"
+#include "solver/model_choice.h"
 #include "solver/simulate_impl.h"
 
 namespace ivv {
@@ -23,6 +25,18 @@ std::string name_list(const std::array<Kind, N>& kinds) {
 }
 
 }  // namespace
+
+std::string_view to_string(ModelKind kind) {
+  return kind == ModelKind::automatic ? "auto" : "full";
+}
+
+ModelKind parse_model(const std::string& name) {
+  if (name == "auto") return ModelKind::automatic;
+  if (name == "full") return ModelKind::full;
+  throw InputError("--model", "unknown model '" + name +
+                                  "'; valid names: auto (what the scene needs within --rtol), "
+                                  "full (the ODE model of the law, integrated)");
+}
 
 std::span<const LawKind> all_laws() {
   return kLaws;
@@ -133,9 +147,9 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 
 namespace {
 
-ImpactResult dispatch(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
-  const SimulationRequest& req = v.request();
-  switch (req.integrator) {
+ImpactResult dispatch(const ValidatedRequest& v, IntegratorKind integrator,
+                      std::vector<TrajectoryPoint>* trajectory) {
+  switch (integrator) {
     case IntegratorKind::odeint_dopri5:
       return detail::simulate_odeint_dopri5(v, trajectory);
     case IntegratorKind::odeint_rosenbrock4:
@@ -155,7 +169,7 @@ ImpactResult dispatch(const ValidatedRequest& v, std::vector<TrajectoryPoint>* t
   }
   ImpactResult r;
   r.failure = FailureKind::integrator;
-  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(req.integrator)) +
+  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(integrator)) +
              " (not in all_integrators())";
   return r;
 }
@@ -167,14 +181,27 @@ ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>
 }
 
 ImpactResult simulate(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
-  const SimulationRequest& req = v.request();
-  ImpactResult r = dispatch(v, trajectory);
+  if (v.request().model == ModelKind::automatic)
+    return run_model(v, decide_model(v, trajectory != nullptr), trajectory);
+  return detail::simulate_full(v, effective_integrator(v), trajectory);
+}
+
+IntegratorKind effective_integrator(const ValidatedRequest& v) {
+  return v.request().auto_integrator ? auto_integrator(v.request().scene, v.derived())
+                                     : v.request().integrator;
+}
+
+namespace detail {
+ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
+                           std::vector<TrajectoryPoint>* trajectory) {
+  ImpactResult r = dispatch(v, integrator, trajectory);
   // A failure always says why: one that reached here without a reason is named as such.
   if (!r.ok() && r.reason.empty()) {
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;
-    r.reason = std::string(to_string(req.integrator)) + ": the run failed without a reason";
+    r.reason = std::string(to_string(integrator)) + ": the run failed without a reason";
   }
   return r;
 }
+}  // namespace detail
 
 }  // namespace ivv

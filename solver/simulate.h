@@ -27,10 +27,22 @@ namespace ivv {
 std::span<const LawKind> all_laws();
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
 
+// What runs for a request (solver/model_choice.h). `full`: the ODE model of the law, integrated
+// by `integrator` (the library's default). `automatic` (`--model auto`, the CLI's default): what
+// the scene needs within the requested tolerance - an exact closed form where one exists, the
+// linearized closed form where its estimated error is within rtol, otherwise the full model.
+enum class ModelKind { automatic, full };
+std::string_view to_string(ModelKind kind);      // "auto", "full"
+ModelKind parse_model(const std::string& name);  // throws InputError("--model", ...)
+
 struct SimulationRequest {
   Scene scene;
   LawKind law = LawKind::elastoplastic;
   IntegratorKind integrator = IntegratorKind::odeint_dopri5;
+  // --integrator auto: `integrator` is replaced per run by choose_integrator()'s choice
+  // (solver/integrator_choice.h), so each point of a sweep gets its own.
+  bool auto_integrator = false;
+  ModelKind model = ModelKind::full;
   IntegratorOptions options;
   LawParameters parameters;      // the law's --param values (law_info(law).parameters)
   ExpressionLawSpec expression;  // law == LawKind::expression: the typed law
@@ -80,6 +92,16 @@ ImpactResult simulate(const SimulationRequest& request,
 // Runs a request validated before (no check repeated).
 ImpactResult simulate(const ValidatedRequest& request,
                       std::vector<TrajectoryPoint>* trajectory = nullptr);
+
+// The integrator a run uses: auto_integrator()'s choice (solver/integrator_choice.h) when
+// request.auto_integrator, request.integrator otherwise.
+IntegratorKind effective_integrator(const ValidatedRequest& request);
+
+namespace detail {
+// The full ODE model of the law with `integrator`, whatever request.model says.
+ImpactResult simulate_full(const ValidatedRequest& request, IntegratorKind integrator,
+                           std::vector<TrajectoryPoint>* trajectory);
+}  // namespace detail
 
 // Throws InputError for invalid options or an incompatible combination: the one validation
 // of a request (ValidatedRequest's constructor), called by every entry point.
