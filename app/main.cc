@@ -31,6 +31,7 @@
 #include "solver/input_error.h"
 #include "solver/integrator_accuracy.h"
 #include "solver/integrator_choice.h"
+#include "solver/model_choice.h"
 #include "solver/simulate.h"
 #include "solver/sweep.h"
 #include "verification/conformance.h"
@@ -51,7 +52,8 @@ struct ModelFlags {
   std::optional<std::string> c;
   bool no_dashpot = false;
   std::string law = "elastoplastic";
-  std::string integrator = "odeint-dopri5";
+  std::string integrator = "auto";
+  std::string model = "auto";
   std::optional<std::string> rtol, atol, dt;
   std::optional<std::string> hc_k;
   std::optional<std::string> hc_mu;
@@ -99,6 +101,11 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   cmd.add_option("--integrator", f.integrator,
                  "integrator (see `ivv integrators`), or auto: chosen by stiffness")
       ->capture_default_str();
+  cmd.add_option("--model", f.model,
+                 "auto: what the scene needs within --rtol (exact closed forms where they exist, "
+                 "the linearized closed form where its estimated error is within --rtol, else "
+                 "the integrator); full: always integrate the law's ODE model")
+      ->capture_default_str();
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
   cmd.add_option("--dt", f.dt,
@@ -143,9 +150,11 @@ SimulationRequest build_request(const ModelFlags& flags) {
   } else {
     req.law = parse_law(flags.law);
   }
-  // auto: chosen below, once the scene, law and tolerances are known
+  // auto: chosen below, once the scene, law and tolerances are known (and per point of a sweep)
+  req.auto_integrator = flags.integrator == "auto";
   req.integrator =
-      flags.integrator == "auto" ? IntegratorKind::dop853 : parse_integrator(flags.integrator);
+      req.auto_integrator ? IntegratorKind::dop853 : parse_integrator(flags.integrator);
+  req.model = parse_model(flags.model);
   req.parameters = parse_parameters(flags.params);
   if (f.hc_k || f.hc_mu) {
     const char* flag = f.hc_k ? "--hc-k" : "--hc-mu";
@@ -178,7 +187,7 @@ SimulationRequest build_request(const ModelFlags& flags) {
     if (e.field() == "damping.c" && f.c) throw InputError("--c", message);
     throw;
   }
-  if (flags.integrator == "auto") req.integrator = choose_integrator(req).integrator;
+  if (req.auto_integrator) req.integrator = choose_integrator(req).integrator;
   return req;
 }
 
@@ -229,7 +238,16 @@ int run_simulate(const ModelFlags& f, bool json,
   if (trajectory_flag) resolve_output_path(*trajectory_flag, "--trajectory");
   const std::string trajectory_path = trajectory_flag.value_or("");
   std::vector<TrajectoryPoint> trajectory;
-  const ImpactResult r = simulate(req, trajectory_path.empty() ? nullptr : &trajectory);
+  std::vector<TrajectoryPoint>* wanted = trajectory_path.empty() ? nullptr : &trajectory;
+  std::optional<ModelChoice> model_choice;
+  ImpactResult r;
+  if (req.model == ModelKind::automatic) {
+    ModelRun run = simulate_model(ValidatedRequest(req), wanted);
+    r = std::move(run.result);
+    model_choice = std::move(run.choice);
+  } else {
+    r = simulate(req, wanted);
+  }
   if (r.failure == FailureKind::law_domain) throw InputError("--law", r.reason);
   if (!trajectory_path.empty() && r.ok()) {
     write_file_atomically(
@@ -244,9 +262,16 @@ int run_simulate(const ModelFlags& f, bool json,
   }
   if (json) {
     nlohmann::json j = simulation_json(req, r);
-    if (f.integrator == "auto") {
+    if (model_choice) {
+      j["model_choice"] = {{"model", "auto"},
+                           {"law", model_choice->law},
+                           {"integrator", model_choice->integrator},
+                           {"reasons", model_choice->reasons},
+                           {"estimated_error", model_choice->estimated_error}};
+    } else if (req.auto_integrator) {
       const IntegratorChoice c = choose_integrator(req);
-      j["model_choice"] = {{"law", std::string(to_string(req.law))},
+      j["model_choice"] = {{"model", "full"},
+                           {"law", std::string(to_string(req.law)) + " (full model, integrated)"},
                            {"integrator", std::string(to_string(c.integrator))},
                            {"reasons", c.reasons},
                            {"estimated_error", c.estimated_error}};
@@ -254,6 +279,11 @@ int run_simulate(const ModelFlags& f, bool json,
     std::cout << j.dump(2) << std::endl;
   } else {
     print_summary(std::cout, req, r);
+    if (model_choice) {
+      std::cout << "  model        " << model_choice->law << " (integrator "
+                << model_choice->integrator << ", estimated error " << model_choice->estimated_error
+                << "; --model full to integrate always)\n";
+    }
   }
   if (!r.ok()) {
     if (json) std::cerr << "ivv simulate: " << r.reason << "\n";

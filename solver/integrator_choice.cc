@@ -28,14 +28,24 @@ std::string fmt(double v) {
 
 }  // namespace
 
+double stiffness_ratio(const Scene& scene, const DerivedParameters& p) {
+  // validate() refuses a dashpot for a law that carries its own damping
+  if (!p.has_dashpot()) return 0.0;
+  return 2.0 * p.zeta * std::max(1.0, std::sqrt(undamped_z_max(scene, p) / p.z_y));
+}
+
+IntegratorKind auto_integrator(const Scene& scene, const DerivedParameters& p) {
+  return stiffness_ratio(scene, p) > kStiffnessThreshold ? IntegratorKind::odeint_rosenbrock4
+                                                         : IntegratorKind::dop853;
+}
+
 IntegratorChoice choose_integrator(const SimulationRequest& req) {
   IntegratorChoice c;
   const DerivedParameters p = derive(req.scene);
-  // validate() refuses a dashpot for a law that carries its own damping
   const bool dashpot = p.has_dashpot();
   if (dashpot) {
     const double k_max = std::max(1.0, std::sqrt(undamped_z_max(req.scene, p) / p.z_y));
-    c.stiffness_ratio = 2.0 * p.zeta * k_max;
+    c.stiffness_ratio = stiffness_ratio(req.scene, p);
     c.reasons.push_back("stiffness ratio S = 2 zeta k_max = 2 x " + fmt(p.zeta) + " x " +
                         fmt(k_max) + " = " + fmt(c.stiffness_ratio) +
                         " (dashpot relaxation rate over the loading rate; k_max = "
@@ -46,13 +56,12 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
                                   " carries its own damping, no dashpot: not stiff (S = 0)"
                             : "no dashpot: not stiff (S = 0)");
   }
-  if (c.stiffness_ratio > kStiffnessThreshold) {
-    c.integrator = IntegratorKind::odeint_rosenbrock4;
+  c.integrator = auto_integrator(req.scene, p);
+  if (c.integrator == IntegratorKind::odeint_rosenbrock4) {
     c.reasons.push_back("S > " + fmt(kStiffnessThreshold) +
                         ": stiff, an explicit method would be held to |h lambda| = O(1) by "
                         "stability; implicit odeint-rosenbrock4 (L-stable, dense output)");
   } else {
-    c.integrator = IntegratorKind::dop853;
     c.reasons.push_back("S <= " + fmt(kStiffnessThreshold) +
                         ": not stiff; the eighth-order explicit dop853 (dense output) needs "
                         "the fewest evaluations at rtol " +

@@ -44,7 +44,12 @@ struct IntegratorChoice {
   std::vector<std::string> reasons;
 };
 
-// The choice for `request` (its law, scene and rtol; its integrator field is ignored).
+// The choice for `request` (its law, scene and rtol; its integrator field is ignored), with
+// the reasons in words.
 IntegratorChoice choose_integrator(const SimulationRequest& request);
+// The same choice without the words (no allocation): the per-run path of --integrator auto.
+IntegratorKind auto_integrator(const Scene& scene, const DerivedParameters& p);
+// The stiffness ratio S above (0 without a dashpot).
+double stiffness_ratio(const Scene& scene, const DerivedParameters& p);
 
 }  // namespace ivv

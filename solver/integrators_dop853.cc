@@ -5,9 +5,8 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_dop853(const SimulationRequest& req, const DerivedParameters& p,
-                             std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<Dop853Stepper>(req, p, trajectory);
+ImpactResult simulate_dop853(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  return simulate_with<Dop853Stepper>(v, trajectory);
 }
 
 IntegratorTraits traits_dop853() {

@@ -5,9 +5,8 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_dp45(const SimulationRequest& req, const DerivedParameters& p,
-                           std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<Dp45Stepper>(req, p, trajectory);
+ImpactResult simulate_dp45(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  return simulate_with<Dp45Stepper>(v, trajectory);
 }
 
 IntegratorTraits traits_dp45() {

@@ -25,14 +25,14 @@ template <class S>
 using GslMsbdf = GslStepper<S, GslMethod::msbdf>;
 }  // namespace
 
-ImpactResult simulate_gsl_rk8pd(const SimulationRequest& req, const DerivedParameters& p,
+ImpactResult simulate_gsl_rk8pd(const ValidatedRequest& v,
                                 std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<GslRk8pd>(req, p, trajectory);
+  return simulate_with<GslRk8pd>(v, trajectory);
 }
 
-ImpactResult simulate_gsl_msbdf(const SimulationRequest& req, const DerivedParameters& p,
+ImpactResult simulate_gsl_msbdf(const ValidatedRequest& v,
                                 std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<GslMsbdf>(req, p, trajectory);
+  return simulate_with<GslMsbdf>(v, trajectory);
 }
 
 IntegratorTraits traits_gsl_rk8pd() {

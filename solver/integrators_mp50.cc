@@ -6,9 +6,8 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_mp50(const SimulationRequest& req, const DerivedParameters& p,
-                           std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<OdeintRkf78MpStepper, mp50>(req, p, trajectory);
+ImpactResult simulate_mp50(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  return simulate_with<OdeintRkf78MpStepper, mp50>(v, trajectory);
 }
 
 IntegratorTraits traits_mp50() {

@@ -5,9 +5,9 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_odeint_dopri5(const SimulationRequest& req, const DerivedParameters& p,
+ImpactResult simulate_odeint_dopri5(const ValidatedRequest& v,
                                     std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<OdeintDopri5Stepper>(req, p, trajectory);
+  return simulate_with<OdeintDopri5Stepper>(v, trajectory);
 }
 
 IntegratorTraits traits_odeint_dopri5() {

@@ -5,9 +5,9 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_odeint_rosenbrock4(const SimulationRequest& req, const DerivedParameters& p,
+ImpactResult simulate_odeint_rosenbrock4(const ValidatedRequest& v,
                                          std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<OdeintRosenbrock4Stepper>(req, p, trajectory);
+  return simulate_with<OdeintRosenbrock4Stepper>(v, trajectory);
 }
 
 IntegratorTraits traits_odeint_rosenbrock4() {

@@ -5,9 +5,8 @@
 
 namespace ivv::detail {
 
-ImpactResult simulate_rk4(const SimulationRequest& req, const DerivedParameters& p,
-                          std::vector<TrajectoryPoint>* trajectory) {
-  return simulate_with<Rk4Stepper>(req, p, trajectory);
+ImpactResult simulate_rk4(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  return simulate_with<Rk4Stepper>(v, trajectory);
 }
 
 IntegratorTraits traits_rk4() {

@@ -137,9 +137,9 @@ void validate_derived(const Scene& s) {
     check("the length scale", k.length, sc);
     check("the force scale", k.force, sc);
     check("the energy scale m v0^2", k.energy, sc);
-    check("the spring energy scale K_h L^2.5", p.K_h * std::pow(k.length, 2.5), sc);
-    check("the spring force scale K_h L^1.5 / F_scale", p.K_h * std::pow(k.length, 1.5) / k.force,
-          sc);
+    const double L15 = k.length * std::sqrt(k.length);  // L^1.5 without pow
+    check("the spring energy scale K_h L^2.5", p.K_h * L15 * k.length, sc);
+    check("the spring force scale K_h L^1.5 / F_scale", p.K_h * L15 / k.force, sc);
   }
 }
 
@@ -161,7 +161,7 @@ DerivedParameters derive(const Scene& s) {
     p.z_y = 0.68 * Sy * Sy * pi2 * R / (p.E_star * p.E_star);  // eq. 11
     p.K_y = 1.5 * p.K_h * std::sqrt(p.z_y);                    // eq. 12
     p.omega0 = std::sqrt(p.K_y / m);                           // eq. 23
-    p.v_yield = std::sqrt(4.0 * p.K_h * std::pow(p.z_y, 2.5) / (5.0 * m));
+    p.v_yield = std::sqrt(4.0 * p.K_h * p.z_y * p.z_y * std::sqrt(p.z_y) / (5.0 * m));
   }
   const double critical = std::sqrt(m * p.K_y);  // 2 c zeta (NaN without a yield strength)
   switch (s.damping.kind) {

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "solver/input_error.h"
+#include "solver/integrator_choice.h"
+#include "solver/model_choice.h"
 #include "solver/simulate_impl.h"
 
 namespace ivv {
@@ -23,6 +25,18 @@ std::string name_list(const std::array<Kind, N>& kinds) {
 }
 
 }  // namespace
+
+std::string_view to_string(ModelKind kind) {
+  return kind == ModelKind::automatic ? "auto" : "full";
+}
+
+ModelKind parse_model(const std::string& name) {
+  if (name == "auto") return ModelKind::automatic;
+  if (name == "full") return ModelKind::full;
+  throw InputError("--model", "unknown model '" + name +
+                                  "'; valid names: auto (what the scene needs within --rtol), "
+                                  "full (the ODE model of the law, integrated)");
+}
 
 std::span<const LawKind> all_laws() {
   return kLaws;
@@ -84,6 +98,10 @@ void validate(const IntegratorOptions& options) {
 }
 
 void validate(const SimulationRequest& req) {
+  const ValidatedRequest checked(req);
+}
+
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req) {
   validate(req.scene);
   validate(req.options);
   validate_parameters(req.law, req.parameters);
@@ -100,9 +118,12 @@ void validate(const SimulationRequest& req) {
                                     "; give one or the other");
   if (req.law == LawKind::expression && req.expression.force.empty())
     throw InputError("--force", "the expression law needs a force expression");
+  derived_ = derive(req.scene);
   bool rate_dependent = law.rate_dependent;
-  if (req.law == LawKind::expression)
-    rate_dependent = detail::compile_expression_law(req, derive(req.scene))->uses_rate();
+  if (req.law == LawKind::expression) {
+    expression_ = detail::compile_expression_law(req, derived_);  // once: the run uses it too
+    rate_dependent = expression_->uses_rate();
+  }
   if (rate_dependent && req.scene.damping.kind != Damping::Kind::none) {
     throw InputError(
         req.scene.damping.kind == Damping::Kind::ratio ? "--zeta" : "--c",
@@ -110,6 +131,11 @@ void validate(const SimulationRequest& req) {
                                                    : "the " + std::string(law.name) + " law") +
             " carries its own damping and runs without the series dashpot");
   }
+}
+
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req, Trusted)
+    : request_(&req), derived_(derive(req.scene)) {
+  if (req.law == LawKind::expression) expression_ = detail::compile_expression_law(req, derived_);
 }
 
 namespace detail {
@@ -121,29 +147,29 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 
 namespace {
 
-ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
+ImpactResult dispatch(const ValidatedRequest& v, IntegratorKind integrator,
                       std::vector<TrajectoryPoint>* trajectory) {
-  switch (req.integrator) {
+  switch (integrator) {
     case IntegratorKind::odeint_dopri5:
-      return detail::simulate_odeint_dopri5(req, p, trajectory);
+      return detail::simulate_odeint_dopri5(v, trajectory);
     case IntegratorKind::odeint_rosenbrock4:
-      return detail::simulate_odeint_rosenbrock4(req, p, trajectory);
+      return detail::simulate_odeint_rosenbrock4(v, trajectory);
     case IntegratorKind::rk4:
-      return detail::simulate_rk4(req, p, trajectory);
+      return detail::simulate_rk4(v, trajectory);
     case IntegratorKind::dp45:
-      return detail::simulate_dp45(req, p, trajectory);
+      return detail::simulate_dp45(v, trajectory);
     case IntegratorKind::dop853:
-      return detail::simulate_dop853(req, p, trajectory);
+      return detail::simulate_dop853(v, trajectory);
     case IntegratorKind::gsl_rk8pd:
-      return detail::simulate_gsl_rk8pd(req, p, trajectory);
+      return detail::simulate_gsl_rk8pd(v, trajectory);
     case IntegratorKind::gsl_msbdf:
-      return detail::simulate_gsl_msbdf(req, p, trajectory);
+      return detail::simulate_gsl_msbdf(v, trajectory);
     case IntegratorKind::mp50:
-      return detail::simulate_mp50(req, p, trajectory);
+      return detail::simulate_mp50(v, trajectory);
   }
   ImpactResult r;
   r.failure = FailureKind::integrator;
-  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(req.integrator)) +
+  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(integrator)) +
              " (not in all_integrators())";
   return r;
 }
@@ -151,15 +177,31 @@ ImpactResult dispatch(const SimulationRequest& req, const DerivedParameters& p,
 }  // namespace
 
 ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>* trajectory) {
-  validate(req);
-  const DerivedParameters p = derive(req.scene);
-  ImpactResult r = dispatch(req, p, trajectory);
+  return simulate(ValidatedRequest(req), trajectory);
+}
+
+ImpactResult simulate(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  if (v.request().model == ModelKind::automatic)
+    return run_model(v, decide_model(v, trajectory != nullptr), trajectory);
+  return detail::simulate_full(v, effective_integrator(v), trajectory);
+}
+
+IntegratorKind effective_integrator(const ValidatedRequest& v) {
+  return v.request().auto_integrator ? auto_integrator(v.request().scene, v.derived())
+                                     : v.request().integrator;
+}
+
+namespace detail {
+ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
+                           std::vector<TrajectoryPoint>* trajectory) {
+  ImpactResult r = dispatch(v, integrator, trajectory);
   // A failure always says why: one that reached here without a reason is named as such.
   if (!r.ok() && r.reason.empty()) {
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;
-    r.reason = std::string(to_string(req.integrator)) + ": the run failed without a reason";
+    r.reason = std::string(to_string(integrator)) + ": the run failed without a reason";
   }
   return r;
 }
+}  // namespace detail
 
 }  // namespace ivv

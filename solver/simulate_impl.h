@@ -156,8 +156,9 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 
 // Runs the expression law and turns a non-finite evaluation into a failure naming it.
 template <class F>
-ImpactResult run_expression_law(const SimulationRequest& req, const DerivedParameters& p, F&& run) {
-  const auto compiled = compile_expression_law(req, p);
+ImpactResult run_expression_law(const ValidatedRequest& v, F&& run) {
+  const SimulationRequest& req = v.request();
+  const auto& compiled = v.expression();
   const bool tension = req.expression.allow_tension;
   ImpactResult r;
   try {
@@ -176,31 +177,24 @@ ImpactResult run_expression_law(const SimulationRequest& req, const DerivedParam
 }
 
 template <template <class> class Stepper, class T = double>
-ImpactResult simulate_with(const SimulationRequest& req, const DerivedParameters& p,
-                           std::vector<TrajectoryPoint>* trajectory) {
+ImpactResult simulate_with(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
+  const SimulationRequest& req = v.request();
+  const DerivedParameters& p = v.derived();
   auto run = [&](const auto& law) {
     return run_law<Stepper, T>(law, req.scene, req.options, p, trajectory);
   };
-  if (req.law == LawKind::expression) return run_expression_law(req, p, run);
+  if (req.law == LawKind::expression) return run_expression_law(v, run);
   return with_builtin_law(req.law, req.parameters, p, run);
 }
 
 // Defined in integrators_*.cc, one per integrator.
-ImpactResult simulate_odeint_dopri5(const SimulationRequest&, const DerivedParameters&,
-                                    std::vector<TrajectoryPoint>*);
-ImpactResult simulate_odeint_rosenbrock4(const SimulationRequest&, const DerivedParameters&,
-                                         std::vector<TrajectoryPoint>*);
-ImpactResult simulate_rk4(const SimulationRequest&, const DerivedParameters&,
-                          std::vector<TrajectoryPoint>*);
-ImpactResult simulate_dp45(const SimulationRequest&, const DerivedParameters&,
-                           std::vector<TrajectoryPoint>*);
-ImpactResult simulate_dop853(const SimulationRequest&, const DerivedParameters&,
-                             std::vector<TrajectoryPoint>*);
-ImpactResult simulate_gsl_rk8pd(const SimulationRequest&, const DerivedParameters&,
-                                std::vector<TrajectoryPoint>*);
-ImpactResult simulate_gsl_msbdf(const SimulationRequest&, const DerivedParameters&,
-                                std::vector<TrajectoryPoint>*);
-ImpactResult simulate_mp50(const SimulationRequest&, const DerivedParameters&,
-                           std::vector<TrajectoryPoint>*);
+ImpactResult simulate_odeint_dopri5(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_odeint_rosenbrock4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_rk4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_dp45(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_dop853(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_gsl_rk8pd(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_gsl_msbdf(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_mp50(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 
 }  // namespace ivv::detail

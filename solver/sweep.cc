@@ -122,6 +122,11 @@ void validate(const SweepRequest& req) {
   for (double z : req.zetas) validate(with_point(req.base, req.velocities.front(), z));
 }
 
+ValidatedRequest ValidatedRequest::grid_point(const SweepRequest& /*grid: validated*/,
+                                              const SimulationRequest& point) {
+  return ValidatedRequest(point, Trusted{});
+}
+
 // ---- rows ----------------------------------------------------------------------------------
 
 std::string sweep_csv_header() {
@@ -155,7 +160,8 @@ std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
   const SimulationRequest r = point_request(req, index);
   try {
-    return sweep_csv_row(r.scene.velocity, req.zetas[index % req.zetas.size()], simulate(r));
+    return sweep_csv_row(r.scene.velocity, req.zetas[index % req.zetas.size()],
+                         simulate(ValidatedRequest::grid_point(req, r)));
   } catch (const std::exception& e) {
     throw std::runtime_error(point_label(req, index) + ": " + e.what());
   }
@@ -175,7 +181,8 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
       points[i].v0 = req.velocities[i / nz];
       points[i].zeta = req.zetas[i % nz];
       try {
-        points[i].result = simulate(point_request(req, i));
+        const SimulationRequest point = point_request(req, i);
+        points[i].result = simulate(ValidatedRequest::grid_point(req, point));
       } catch (const std::exception& e) {
         throw std::runtime_error(point_label(req, i) + ": " + e.what());
       }
