@@ -69,9 +69,29 @@ TEST(Cli, AutoIntegratorSaysWhatItChoseAndWhy) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["model_choice"]["integrator"], "odeint-rosenbrock4");
-  EXPECT_EQ(j["model_choice"]["law"], "elastoplastic");
+  EXPECT_EQ(j["model_choice"]["route"], "integrated");  // a dashpot: no exact closed form
+  EXPECT_EQ(j["model_choice"]["law"], "elastoplastic (full model, integrated)");
   EXPECT_GE(j["model_choice"]["reasons"].size(), 2u);
   EXPECT_GT(j["model_choice"]["estimated_error"].get<double>(), 0.0);
+}
+
+// --model auto (the default): no dashpot on the elastoplastic law is the closed form by
+// energy, with no integration, and it agrees with the integrated full model.
+TEST(Cli, ModelAutoTakesTheClosedFormWithoutADashpot) {
+  const CliRun a = ivv("simulate --scene paper --v0 1 --no-dashpot --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const auto ja = nlohmann::json::parse(a.out);
+  EXPECT_EQ(ja["model_choice"]["route"], "closed-form-elastoplastic");
+  EXPECT_EQ(ja["model_choice"]["integrator"], "none");
+  EXPECT_EQ(ja["result"]["steps"], 0);
+  const CliRun f = ivv(
+      "simulate --scene paper --v0 1 --no-dashpot --model full --integrator dop853 --rtol 1e-12 "
+      "--json");
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  const auto jf = nlohmann::json::parse(f.out);
+  // the integrated e at rtol 1e-12 is within 1e-9 (N rtol over < 1000 steps) of the exact one
+  EXPECT_NEAR(ja["result"]["e"].get<double>(), jf["result"]["e"].get<double>(), 1e-9);
+  EXPECT_NEAR(ja["result"]["F_max"].get<double>() / jf["result"]["F_max"].get<double>(), 1.0, 1e-9);
 }
 
 TEST(Cli, BenchRejectsUnknownFlags) {

@@ -264,6 +264,7 @@ int run_simulate(const ModelFlags& f, bool json,
     nlohmann::json j = simulation_json(req, r);
     if (model_choice) {
       j["model_choice"] = {{"model", "auto"},
+                           {"route", to_string(model_choice->decision.route)},
                            {"law", model_choice->law},
                            {"integrator", model_choice->integrator},
                            {"reasons", model_choice->reasons},
@@ -271,6 +272,7 @@ int run_simulate(const ModelFlags& f, bool json,
     } else if (req.auto_integrator) {
       const IntegratorChoice c = choose_integrator(req);
       j["model_choice"] = {{"model", "full"},
+                           {"route", to_string(ModelRoute::integrated)},
                            {"law", std::string(to_string(req.law)) + " (full model, integrated)"},
                            {"integrator", std::string(to_string(c.integrator))},
                            {"reasons", c.reasons},

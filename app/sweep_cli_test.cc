@@ -120,10 +120,20 @@ TEST(SweepCli, SigtermStopsCleanlyAndSaysHowToResume) {
     _exit(127);
   }
   const fs::path journal = csv.string() + ".journal";
-  while (!(fs::exists(journal) && lines(journal) > 1000))
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  kill(pid, SIGTERM);
+  // a sweep that ends (or dies) before it has journalled 1000 points is a failure, not a hang
   int status = 0;
+  bool ended = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!(fs::exists(journal) && lines(journal) > 1000)) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "no journal after 60 s";
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      ended = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_FALSE(ended) << "the sweep ended before it was interrupted: " << slurp(err);
+  kill(pid, SIGTERM);
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
@@ -182,7 +192,9 @@ TEST(SweepCli, SidecarDescribesTheRun) {
       0);
   const auto j = nlohmann::json::parse(slurp(scratch("small.json")));
   EXPECT_EQ(j["law"], "elastoplastic");
-  EXPECT_EQ(j["integrator"], "odeint-dopri5");
+  // the defaults (issue 8): the model and the integrator are chosen per point
+  EXPECT_EQ(j["integrator"], "auto");
+  EXPECT_EQ(j["model"], "auto");
   EXPECT_EQ(j["grid"]["points"], 12);
   EXPECT_EQ(j["grid"]["v0"]["spec"], "0.5:5:4");
   EXPECT_EQ(j["counts"]["separated"], 12);

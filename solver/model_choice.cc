@@ -238,10 +238,10 @@ LinearEstimate linear_estimate(const Scene& scene, const DerivedParameters& p, d
   const double growth = kLinearSafety * (1.0 + kLinearZetaGrowth * p.zeta);
   // pre-screen on e alone (no quadrature, no linear solve): e_lin = gamma (eq 20) undamped
   const UndampedImpact nl = undamped_elastoplastic(m, p.K_h, p.z_y, v0, false, rtol);
-  const double g2 = oracles::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
-  if (!(g2 > 0) || !nl.yielded) return out;
-  if (!(growth * rel(std::sqrt(g2), nl.e) <= rtol)) return out;
-  try {
+  if (!nl.yielded) return out;
+  try {  // eq 20 and the linear model throw below z_m = 2.25 z_y, where the law is undefined
+    const double g2 = oracles::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
+    if (!(g2 > 0) || !(growth * rel(std::sqrt(g2), nl.e) <= rtol)) return out;
     const oracles::LinearImpact lin0 = oracles::solve_linear_model({m, p.K_h, p.K_y, 0.0, v0});
     const UndampedImpact nlt = undamped_elastoplastic(m, p.K_h, p.z_y, v0, true, rtol);
     out.D0 = std::max({rel(lin0.e, nlt.e), rel(lin0.z_max, nlt.z_max), rel(lin0.F_max, nlt.F_max),
@@ -258,6 +258,22 @@ LinearEstimate linear_estimate(const Scene& scene, const DerivedParameters& p, d
 }
 
 }  // namespace
+
+std::string_view to_string(ModelRoute r) {
+  switch (r) {
+    case ModelRoute::closed_form_elastoplastic:
+      return "closed-form-elastoplastic";
+    case ModelRoute::closed_form_hertz:
+      return "closed-form-hertz";
+    case ModelRoute::hunt_crossley_lambert_w:
+      return "hunt-crossley-lambert-w";
+    case ModelRoute::linearized_closed_form:
+      return "linearized-closed-form";
+    case ModelRoute::integrated:
+      return "integrated";
+  }
+  return "integrated";
+}
 
 ModelDecision decide_model(const ValidatedRequest& v, bool trajectory_wanted) {
   const SimulationRequest& req = v.request();

@@ -64,6 +64,10 @@ enum class ModelRoute {
   integrated
 };
 
+// "closed-form-elastoplastic", "closed-form-hertz", "hunt-crossley-lambert-w",
+// "linearized-closed-form", "integrated": the route in `simulate --json` model_choice.route.
+std::string_view to_string(ModelRoute r);
+
 // Relative error of a closed form evaluated in double: a few operations with pow/cbrt/sqrt.
 inline constexpr double kEstimateClosedForm = 1e-14;
 // The linearized route (4): estimated_error = kLinearSafety (1 + kLinearZetaGrowth zeta) D0.
