@@ -70,11 +70,11 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
   const bool implicit = c.integrator == IntegratorKind::odeint_rosenbrock4;
   const double factor = implicit ? kAutoErrorFactorImplicit : kAutoErrorFactorExplicit;
   c.estimated_error = factor * req.options.rtol;
-  c.reasons.push_back("estimated relative error of e, F_max, t_f: " + fmt(factor) +
-                      " rtol = " + fmt(c.estimated_error) + " (the global error of " +
+  c.reasons.push_back("estimated error of e (in v0), F_max, z_max, and of t_f times e: " +
+                      fmt(factor) + " rtol = " + fmt(c.estimated_error) + " (the global error of " +
                       std::string(to_string(c.integrator)) +
-                      " measured across the paper grid and the stiff scene, checked by the "
-                      "autochoice cases)");
+                      " measured on the paper grid, the Hertz law and the stiff scene, checked "
+                      "by the autochoice cases)");
   return c;
 }
 

@@ -36,10 +36,11 @@
 //  A trajectory asked for, an expression law or the linearized law always run route 5 (a
 //  closed form gives no trajectory; the linearized law is integrated as asked).
 //
-// Estimated error (relative, of e, F_max, z_max and t_f): closed forms kEstimateClosedForm
+// Estimated error (of e in units of v0, relative of F_max and z_max, and of t_f relative
+// divided by e: see solver/integrator_choice.h): closed forms kEstimateClosedForm
 // (round-off of a few operations, pow and cbrt) or the quadrature's estimate when larger;
 // route 3: the integrator's (e then exact); route 4: as above; route 5: choose_integrator()'s
-// factor (10 rtol explicit, 100 rtol implicit).
+// factor (200 rtol explicit, 100 rtol implicit: solver/integrator_choice.h).
 //
 // The ImpactResult of a closed form is complete where the form gives a field and says where it
 // does not: Newton, Poisson and energetic COR are equal by momentum and by the work of the
