@@ -384,6 +384,7 @@ TEST(Cli, FailedRunPrintsNullOutcome) {
   for (const char* key : {"e", "e_poisson", "e_energetic", "F_max", "t_contact", "z_perm"})
     EXPECT_TRUE(j["result"][key].is_null()) << key << " = " << j["result"][key];
   EXPECT_TRUE(j["result"]["energy"]["residual"].is_null());
+  EXPECT_TRUE(j["result"]["energy"]["plastic_integrated"].is_boolean());  // a flag, not a number
   EXPECT_FALSE(j["result"]["reason"].get<std::string>().empty());
   EXPECT_GT(j["result"]["steps"].get<long>(), 0);
 }

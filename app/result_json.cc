@@ -83,7 +83,7 @@ nlohmann::json result_json(const ImpactResult& r) {
         {"plastic", value(r.energy.plastic)},
         {"viscous", value(r.energy.viscous)},
         {"residual", value(r.energy.residual)},
-        {"plastic_integrated", value(r.energy.plastic_integrated)}}},
+        {"plastic_integrated", r.energy.plastic_integrated}}},
       {"steps", r.steps},
       {"rhs_evaluations", r.rhs_evaluations},
       {"events", events},
