@@ -310,7 +310,9 @@ ModelDecision decide_model(const ValidatedRequest& v, bool trajectory_wanted) {
   return d;
 }
 
-ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
+namespace {
+// The run of one route (run_model adds the route's name to the result).
+ImpactResult run_route(const ValidatedRequest& v, const ModelDecision& d,
                        std::vector<TrajectoryPoint>* trajectory) {
   const SimulationRequest& req = v.request();
   const DerivedParameters& p = v.derived();
@@ -353,6 +355,14 @@ ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
       break;
   }
   return detail::simulate_full(v, d.integrator, trajectory);
+}
+}  // namespace
+
+ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
+                       std::vector<TrajectoryPoint>* trajectory) {
+  ImpactResult r = run_route(v, d, trajectory);
+  r.route = to_string(d.route);
+  return r;
 }
 
 ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const ImpactResult& r) {

@@ -78,6 +78,11 @@ struct ImpactResult {
   EnergyLedger energy;
   long steps = 0;
   long rhs_evaluations = 0;
+  // What produced the numbers (static strings, no allocation per impact): `route` is
+  // "integrated" or the closed-form route --model auto took (solver/model_choice.h, the names
+  // of model_choice.route), `integrator` the one that ran, "none" for a closed form.
+  std::string_view route = "integrated";
+  std::string_view integrator = "none";
   std::vector<ImpactEvent> events;
 
   bool separated() const { return status == ImpactStatus::separated; }

@@ -65,10 +65,16 @@ std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 0xcbf29ce484222325UL
   return h;
 }
 
-// Field 13 (status) of a row; fields 0-12 are numbers without commas.
+// The status field of a row: its index is read off sweep_csv_header(), and the fields before
+// it (numbers, the route and integrator names) hold no commas.
 std::string_view status_of(std::string_view row) {
+  static const int field = [] {
+    const std::string header = sweep_csv_header();
+    const std::string_view before(header.data(), header.find(",status,"));
+    return static_cast<int>(std::count(before.begin(), before.end(), ',')) + 1;
+  }();
   std::size_t pos = 0;
-  for (int f = 0; f < 13 && pos != std::string_view::npos; ++f) {
+  for (int f = 0; f < field && pos != std::string_view::npos; ++f) {
     pos = row.find(',', pos);
     if (pos != std::string_view::npos) ++pos;
   }
@@ -131,7 +137,7 @@ ValidatedRequest ValidatedRequest::grid_point(const SweepRequest& /*grid: valida
 
 std::string sweep_csv_header() {
   return "v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,"
-         "energy_residual,steps,status,reason\n";
+         "energy_residual,steps,route,integrator,status,reason\n";
 }
 
 std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
@@ -143,7 +149,8 @@ std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
   } else {
     row += std::string(10, ',');  // no number is better than a plausible wrong one
   }
-  row += std::to_string(r.steps) + ',' + std::string(to_string(r.status)) + ',';
+  row += std::to_string(r.steps) + ',' + std::string(r.route) + ',' + std::string(r.integrator) +
+         ',' + std::string(to_string(r.status)) + ',';
   if (!r.reason.empty()) {
     row += '"';
     for (char c : r.reason) {

@@ -63,9 +63,11 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& request);
 
 // ---- CSV rows ----------------------------------------------------------------------------
 // Columns: v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,
-// energy_residual,steps,status,reason. v0 and zeta carry 17 significant digits (a row can be
-// re-run exactly with `ivv simulate --v0 V --zeta Z`), results 12. A failed row leaves every
-// result column empty (never a plausible 0), keeps steps and gives the reason (quoted, RFC 4180).
+// energy_residual,steps,route,integrator,status,reason. v0 and zeta carry 17 significant digits
+// (a row can be re-run exactly with `ivv simulate --v0 V --zeta Z`), results 12. route and
+// integrator say what produced the row (ImpactResult::route, ::integrator): with --model auto
+// and --integrator auto they differ from point to point. A failed row leaves every result
+// column empty (never a plausible 0), keeps steps and gives the reason (quoted, RFC 4180).
 std::string sweep_csv_header();
 std::string sweep_csv_row(double v0, double zeta, const ImpactResult& result);
 // Runs point `index` and returns its row. A throwing simulate() becomes std::runtime_error

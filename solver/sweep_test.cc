@@ -66,7 +66,7 @@ TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
   failed.steps = 12;
   const std::string row = sweep_csv_row(0.1, 1.0 / 3.0, failed);
   EXPECT_EQ(row,
-            "0.10000000000000001,0.33333333333333331,,,,,,,,,,,12,failed,"
+            "0.10000000000000001,0.33333333333333331,,,,,,,,,,,12,integrated,none,failed,"
             "\"step size underflow, \"\"quoted\"\"\"\n");
   // 17 significant digits read back to the same double.
   EXPECT_EQ(std::stod("0.33333333333333331"), 1.0 / 3.0);
@@ -74,7 +74,9 @@ TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
   ImpactResult ok;
   ok.status = ImpactStatus::separated;
   ok.e = 0.5;
-  EXPECT_EQ(sweep_csv_row(1.0, 0.0, ok), "1,0,0.5,0,0,0,0,0,0,0,0,0,0,separated,\n");
+  ok.integrator = "dop853";
+  EXPECT_EQ(sweep_csv_row(1.0, 0.0, ok),
+            "1,0,0.5,0,0,0,0,0,0,0,0,0,0,integrated,dop853,separated,\n");
 }
 
 TEST(SweepRun, ResultsAreIdenticalForAnyThreadCount) {
@@ -160,6 +162,29 @@ TEST(SweepSink, WindowBoundsHowFarAheadWorkIsHandedOut) {
   EXPECT_FALSE(sink.exhausted());
   sink.deliver(0, run_sweep_point(req, 0));
   EXPECT_EQ(sink.take(100, false), (std::vector<std::size_t>{4}));
+}
+
+// Under --model auto and --integrator auto what runs differs from point to point; each row
+// says what produced it: the undamped column is the exact closed form, the damped one dop853.
+TEST(SweepCsv, EachRowSaysWhatProducedIt) {
+  SweepRequest req = paper_grid(2, 2);  // zetas 0 and 1
+  req.zetas = {0.0, 0.1};
+  req.base.model = ModelKind::automatic;
+  req.base.auto_integrator = true;
+  for (const SweepPoint& p : run_sweep(req)) {
+    ASSERT_TRUE(p.result.ok()) << p.result.reason;
+    const std::string row = sweep_csv_row(p.v0, p.zeta, p.result);
+    if (p.zeta == 0.0) {
+      EXPECT_EQ(p.result.route, "closed-form-elastoplastic");
+      EXPECT_EQ(p.result.integrator, "none");
+      EXPECT_NE(row.find(",closed-form-elastoplastic,none,"), std::string::npos) << row;
+    } else {
+      EXPECT_EQ(p.result.route, "integrated");
+      EXPECT_EQ(p.result.integrator, "dop853");
+      EXPECT_NE(row.find(",integrated,dop853,"), std::string::npos) << row;
+    }
+  }
+  EXPECT_NE(sweep_csv_header().find(",steps,route,integrator,status,"), std::string::npos);
 }
 
 }  // namespace
