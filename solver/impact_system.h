@@ -54,6 +54,8 @@ struct ImpactSystem {
   double length = 1.0;       // v0/omega0 [m]
   double velocity = 1.0;     // v0 [m/s]
   double force_scale = 1.0;  // m v0 omega0 [N]
+  double inverse_force_scale = 1.0;  // 1 / force_scale [1/N]: a product, not a division, per
+                                     // right-hand-side evaluation
   double two_zeta = 0.0;     // 2 zeta (Dashpot only)
   mutable long rhs_evaluations = 0;
 
@@ -69,7 +71,7 @@ struct ImpactSystem {
   }
   // Normalised force on the current branch (smooth continuation; may be < 0 past separation).
   T force(const state_type& x) const {
-    return law.force(branch, T(length * z(x)), T(velocity * x[W])) / force_scale;
+    return law.force(branch, T(length * z(x)), T(velocity * x[W])) * inverse_force_scale;
   }
   // Normalised dashpot displacement y = a - z.
   T y(const state_type& x) const {

@@ -195,7 +195,9 @@ namespace detail {
 ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
                            std::vector<TrajectoryPoint>* trajectory) {
   ImpactResult r = dispatch(v, integrator, trajectory);
-  r.integrator = to_string(integrator);
+  // (an out-of-range kind was answered by dispatch with a failure; it has no name)
+  if (static_cast<std::size_t>(integrator) < integrator_table().size())
+    r.integrator = to_string(integrator);
   // A failure always says why: one that reached here without a reason is named as such.
   if (!r.ok() && r.reason.empty()) {
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;

@@ -104,6 +104,7 @@ ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptio
   sys.length = k.length;
   sys.velocity = k.velocity;
   sys.force_scale = k.force;
+  sys.inverse_force_scale = 1.0 / k.force;
   // m* omega/c for the chosen omega (= 2 zeta when omega = omega0)
   sys.two_zeta = Dashpot ? p.effective_mass / (k.time * p.c) : 0.0;
   SampleObserver<System> observer;
