@@ -97,6 +97,8 @@ TEST(Issue10, GrazingCaptureIsCapture) {
   req.scene = paper_scene();
   req.scene.velocity = 2.8923076923076927;
   req.scene.damping = Damping::ratio(0.7777777777777778);
+  // the grazing path is the energy criterion's: the exact one (below) decides first here
+  req.options.exact_capture = false;
   const ImpactResult r = simulate(req);
   ASSERT_TRUE(r.ok()) << r.reason;
   if (r.status == ImpactStatus::captured) {
@@ -106,6 +108,15 @@ TEST(Issue10, GrazingCaptureIsCapture) {
   } else {
     EXPECT_GE(r.e, 0.0);
   }
+  // With the invariant region of ImpactSystem::capture_margin the same impact is a capture
+  // with no rebound at all (e = 0 and e_bound = 0), decided before the creep.
+  req.options.exact_capture = true;
+  const ImpactResult exact = simulate(req);
+  ASSERT_TRUE(exact.ok()) << exact.reason;
+  EXPECT_EQ(exact.status, ImpactStatus::captured);
+  EXPECT_EQ(exact.e, 0.0);
+  EXPECT_EQ(exact.e_bound, 0.0);
+  EXPECT_LE(exact.t_contact, r.t_contact);
 }
 
 // Item 7: TOMS 748 out of iterations was never checked.

@@ -9,9 +9,14 @@
 //                     at z_m)                                                 falling
 //   separation        F = 0 on the unloading branch: end of contact           falling
 //                     (z = 0 instead for a law that allows tension)
-// Onset is the initial state (alpha = 0, alpha_dot = v0). Capture is not an event but a
-// criterion checked after each unloading step: when the rebound the remaining energy could
-// still produce, sqrt(w^2 + 2 U), is below `capture_cor`, the impact ends with e = 0.
+// Onset is the initial state (alpha = 0, alpha_dot = v0). Capture is not an event but one of
+// two criteria checked after each unloading step: (1) exact, for a dashpot and a law whose
+// unloading curve has a slope floor (law.h): the state is inside the forward-invariant region
+// of ImpactSystem::capture_margin, where the impactor keeps approaching for ever, by more than
+// the accumulated error bound; then e = 0 exactly and the long creep towards z_f is not
+// integrated; (2) by energy, for any dissipative law: when the rebound the remaining energy
+// could still produce, sqrt(w^2 + 2 U), is below `capture_cor`, the impact ends with e = 0 and
+// e <= that bound.
 // Capture needs dissipation (a dashpot, or a rate-dependent law that carries its own): without
 // it the unloading branch is conservative, the
 // rebound speed is sqrt(2 U(z_m)) > 0 and the criterion is never applied (a bound that
@@ -403,6 +408,12 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       emit_samples(t0, t1);
       if constexpr (System::has_dashpot || System::rate_dependent) {  // something dissipates
         if (!loading) {
+          // Exact capture: inside the invariant region of ImpactSystem::capture_margin, by more
+          // than the accumulated error bound, the impactor never turns back (e = 0 exactly).
+          const std::optional<double> margin = sys.capture_margin(stepper.x1());
+          if (opt.exact_capture && margin &&
+              *margin > accumulated_error_bound(stepper.steps(), opt))
+            return finish(ImpactStatus::captured, t1, stepper.x1(), 0.0);
           const T bound2 = 2 * sys.recoverable_energy(stepper.x1());
           if (bound2 < T(opt.capture_cor) * T(opt.capture_cor)) {
             using std::sqrt;

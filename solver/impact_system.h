@@ -20,8 +20,10 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstddef>
+#include <optional>
 
 #include "solver/law.h"
 
@@ -50,13 +52,13 @@ struct ImpactSystem {
 
   Law law;
   history_type branch;
-  bool tension = false;      // law_allows_tension(law): contact ends at z = 0, F may be < 0
-  double length = 1.0;       // v0/omega0 [m]
-  double velocity = 1.0;     // v0 [m/s]
-  double force_scale = 1.0;  // m v0 omega0 [N]
+  bool tension = false;              // law_allows_tension(law): contact ends at z = 0, F may be < 0
+  double length = 1.0;               // v0/omega0 [m]
+  double velocity = 1.0;             // v0 [m/s]
+  double force_scale = 1.0;          // m v0 omega0 [N]
   double inverse_force_scale = 1.0;  // 1 / force_scale [1/N]: a product, not a division, per
                                      // right-hand-side evaluation
-  double two_zeta = 0.0;     // 2 zeta (Dashpot only)
+  double two_zeta = 0.0;             // 2 zeta (Dashpot only)
   mutable long rhs_evaluations = 0;
 
   static state_type initial_state() {
@@ -146,6 +148,38 @@ struct ImpactSystem {
     const double b = Dashpot ? two_zeta * k : static_cast<double>(rate_stiffness(x));
     const std::complex<double> disc = std::sqrt(std::complex<double>(b * b - 4 * k));
     return {(-b + disc) / 2.0, (-b - disc) / 2.0};
+  }
+
+  // Exact capture test (with a dashpot, rate-independent laws whose unloading curve has a slope
+  // floor k_f, law.h). Near the permanent set u = z - z_f the unloading dynamics are
+  //   u' = w - 2 zeta F_bar,  w' = -F_bar,  F_bar >= k u   (k = k_f normalised),
+  // and when the relaxation at z_f is overdamped, (2 zeta k)^2 >= 4 k, the slow root
+  //   s1 = 2k / (2 zeta k + sqrt((2 zeta k)^2 - 4k))   of s^2 - 2 zeta k s + k = 0
+  // bounds a forward-invariant region R = {u > 0, w >= s1 u}: on its edge w = s1 u,
+  //   (w - s1 u)' = F_bar (2 zeta s1 - 1) - s1 w >= k u (2 zeta s1 - 1) - s1^2 u = 0,
+  // using 2 zeta s1 >= 1 (s1 s2 = k, s2 <= 2 zeta k) and that z' <= 0 throughout unloading (no
+  // reloading, SPEC §1), so F_bar >= k u holds all along. In R the impactor keeps approaching
+  // (w > 0) while the spring relaxes towards z_f: it never turns back, so the contact never
+  // ends (e = 0 exactly, no rebound at any time). Returns (w - s1 u) / (1 + s1), the margin
+  // by which the state is inside R in units of an error in w and u (an error d in both moves
+  // w - s1 u by at most (1 + s1) d); nullopt where the test does not apply (no floor, not
+  // overdamped at z_f, u <= 0 or w <= 0).
+  std::optional<double> capture_margin(const state_type& x) const {
+    if constexpr (!Dashpot || Law::rate_dependent) {
+      return std::nullopt;
+    } else {
+      const std::optional<double> floor = unloading_slope_floor(law, branch);
+      if (!floor || !(*floor > 0)) return std::nullopt;
+      const double k = *floor * length * inverse_force_scale;
+      const double c = two_zeta * k;
+      const double disc = c * c - 4 * k;
+      if (!(disc >= 0)) return std::nullopt;
+      const double s1 = 2 * k / (c + std::sqrt(disc));
+      const double u = static_cast<double>(z(x)) - static_cast<double>(branch.z_perm) / length;
+      const double w = static_cast<double>(x[W]);
+      if (!(u > 0 && w > 0)) return std::nullopt;
+      return (w - s1 * u) / (1 + s1);
+    }
   }
 
   // Energy that could still come back as rebound, normalised by m v0^2: 1/2 w^2 + U(z).

@@ -30,6 +30,11 @@ struct IntegratorOptions {
   // Declare capture (no rebound, e = 0) once the rebound COR still attainable from the
   // remaining energy, sqrt(w^2 + 2 U), is below this.
   double capture_cor = 1e-9;
+  // Also declare capture, with e = 0 exactly, as soon as the state is inside the invariant
+  // region of ImpactSystem::capture_margin (where the impactor provably never turns back), so
+  // the creep towards the permanent set is not integrated. false: capture by capture_cor only
+  // (the verification case that checks the region integrates on with it).
+  bool exact_capture = true;
   // rtol = atol of the 50-digit reference (mp50); errors of double-precision integrators
   // (>= 1e-16) are measured against it, so 1e-26 leaves ten digits to spare.
   double reference_tolerance = 1e-26;

@@ -74,6 +74,11 @@ class LawDomainError : public std::runtime_error {
 //   needs_yield_strength     bool             the law reads z_y/K_y (default false)
 //   allows_tension           bool (member)    F may go negative; contact ends at z = 0 instead
 //                                             of F = 0 (default false: F is clamped at 0)
+//   unloading_slope_floor(h) [N/m]            optional<double>: a k_f > 0 with
+//                                             F(z) >= k_f (z - z_f) on the whole unloading
+//                                             branch above z_f (a convex unloading curve: its
+//                                             slope at z_f), or nullopt. Lets the driver decide
+//                                             capture exactly (impact_driver.h)
 template <class L>
 concept law_has_identity = requires {
   { L::name } -> std::convertible_to<std::string_view>;
@@ -125,6 +130,15 @@ bool law_allows_tension(const L& law) {
     return static_cast<bool>(law.allows_tension);
   else
     return false;
+}
+
+// The law's unloading_slope_floor(h) when it declares one (see above), else nullopt.
+template <class L, class H>
+std::optional<double> unloading_slope_floor(const L& law, const H& h) {
+  if constexpr (requires { law.unloading_slope_floor(h); })
+    return law.unloading_slope_floor(h);
+  else
+    return std::nullopt;
 }
 
 // z |z|^{1/2}: the Hertz power z^{3/2} continued to z < 0 as an odd, C^1 function, so that a

@@ -5,6 +5,7 @@
 #include "oracles/hertz.h"
 #include "oracles/linear_model.h"
 #include "oracles/undamped_elastoplastic.h"
+#include "solver/consistency.h"
 #include "verification/cases.h"
 #include "verification/study_speed.h"
 #include "verification/support.h"
@@ -102,6 +103,51 @@ Outcome capture(IntegratorKind k) {
   }
   return worst_case(w, default_settings_tolerance(k).value,
                     "captured status, e = 0, F_max and z_max against the closed form");
+}
+
+// The exact capture criterion (ImpactSystem::capture_margin: an invariant region in which the
+// impactor never turns back). Wherever it declared capture on a grid of the paper scene
+// (elastoplastic, dop853 at rtol = atol = 1e-10), the same impact integrated on without it,
+// through the whole creep, until the remaining energy bounds the rebound below 1e-15 v0, must
+// not rebound by more than the integration error of e: it ends captured, or separated with
+// e <= 20 N (atol + 2 rtol) (consistency.h, N its steps). Measured: the largest such e over
+// that bound (<= 1 passes). A grid on which the criterion never fired would prove nothing: that
+// fails too.
+Outcome exact_capture_region() {
+  double worst = 0.0;
+  std::string where = "no capture";
+  int fired = 0, points = 0;
+  for (double v0 : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0}) {
+    for (double zeta : {0.3, 0.6, 1.0, 3.0}) {
+      SimulationRequest req =
+          request(with(paper_scene(), v0, zeta), LawKind::elastoplastic, IntegratorKind::dop853);
+      req.options.rtol = req.options.atol = 1e-10;
+      const std::string at = "v0=" + fmt(v0) + " zeta=" + fmt(zeta);
+      ++points;
+      const ImpactResult r = simulate(req);
+      if (!r.ok()) return at_most(INFINITY, 1.0, at + ": " + r.reason);
+      if (r.status != ImpactStatus::captured || r.e_bound != 0.0) continue;  // not by the region
+      ++fired;
+      req.options.exact_capture = false;
+      req.options.capture_cor = 1e-15;
+      const ImpactResult on = simulate(req);
+      if (!on.ok()) return at_most(INFINITY, 1.0, at + " integrated on: " + on.reason);
+      const double bound = accumulated_error_bound(on.steps, req.options);
+      const double ratio = on.status == ImpactStatus::separated ? on.e / bound : 0.0;
+      if (ratio >= worst) {
+        worst = ratio;
+        where = at + " (integrated on: " + std::string(to_string(on.status)) +
+                ", e = " + fmt(on.e) + ", bound " + fmt(bound) + ", " + std::to_string(on.steps) +
+                " steps)";
+      }
+    }
+  }
+  if (fired == 0) return at_most(INFINITY, 1.0, "the region never declared capture on the grid");
+  return at_most(worst, 1.0,
+                 std::to_string(fired) + " of " + std::to_string(points) +
+                     " grid impacts captured by the region; integrated on through the creep, "
+                     "the largest rebound over its error bound is at " +
+                     where);
 }
 
 // Masses 1e-6 and 1e3 kg against mp50 (the normalisation makes them ordinary problems).
@@ -274,6 +320,12 @@ void register_stability_cases(Registry& reg) {
            "each integrator's default-settings tolerance (tolerances.h) against the independent "
            "e; a failure passes only with its reason, never a silently wrong COR",
            false, hard_cases});
+  reg.add({"stability.exact-capture-region",
+           "Capture decided by the invariant region: integrated on, no rebound beyond the error",
+           Tier::stability,
+           "the rebound of a run integrated through the creep is zero up to its integration "
+           "error, bounded by 20 N (atol + 2 rtol) (consistency.h)",
+           false, exact_capture_region});
   reg.add({"stability.linearized-outside-domain",
            "Linearized law below z_m = 2.25 z_y: every integrator stops with a clear error",
            Tier::stability, "all of them must say so: a NaN or a number would be silently wrong",

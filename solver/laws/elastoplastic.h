@@ -118,6 +118,13 @@ struct ElastoplasticLaw {
     const T F_m_over_K_h = (K_y * (z_m - z_y) + yield_force()) / K_h;
     b.unloading_span = F_m_over_K_h * (a + B) / (a * a + a * B + B * B);
   }
+  // Unloading F = K_h (z^{3/2} - z_f^{3/2}) is convex, so F >= F'(z_f) (z - z_f) with
+  // F'(z_f) = 1.5 K_h sqrt(z_f) [N/m]; nothing useful (0) after an elastic impact (z_f = 0).
+  template <class T>
+  std::optional<double> unloading_slope_floor(const History<T>& b) const {
+    if (b.phase != Phase::unloading || !(b.z_perm > 0)) return std::nullopt;
+    return 1.5 * K_h * static_cast<double>(b.sqrt_z_perm);
+  }
   // int_{z_f}^{z} F_unload ds, factored (see the header comment)
   template <class T>
   T stored_energy(const History<T>& b, const T& z) const {

@@ -7,8 +7,9 @@
 // Variables: z [m] spring deformation, zdot [m/s] its rate, zmax [m] the largest z so far.
 // Constants of the scene: m [kg] and R [m] (the effective mass and radius: the impactor's
 // against a half-space, m1 m2/(m1 + m2) and R1 R2/(R1 + R2) sphere on sphere), E_star [Pa],
-// K_h [N/m^1.5], v0 [m/s], and, when the scene has a yield strength, z_y [m], K_y [N/m]. Every `--param NAME=VALUE` is a constant too.
-// muParser syntax: + - * / ^, sqrt, exp, log (natural), abs, min, max, `a < b ? x : y`.
+// K_h [N/m^1.5], v0 [m/s], and, when the scene has a yield strength, z_y [m], K_y [N/m]. Every
+// `--param NAME=VALUE` is a constant too. muParser syntax: + - * / ^, sqrt, exp, log (natural),
+// abs, min, max, `a < b ? x : y`.
 //
 // The force is clamped to F >= 0 by ending contact at F = 0 (paper eq. 3), unless
 // `allow_tension`: then F may go negative and contact ends at z = 0 (DEM codes that do not

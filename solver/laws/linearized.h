@@ -83,6 +83,12 @@ struct LinearizedLaw {
     const T gamma2 = 1 - b.z_perm / z_m;
     b.unloading_stiffness = K_y / gamma2;
   }
+  // Unloading is the straight line of slope K_y / gamma^2 [N/m] through z_f.
+  template <class T>
+  std::optional<double> unloading_slope_floor(const History<T>& b) const {
+    if (b.phase != Phase::unloading) return std::nullopt;
+    return static_cast<double>(b.unloading_stiffness);
+  }
   template <class T>
   T stored_energy(const History<T>& b, const T& z) const {
     if (b.phase == Phase::loading) return 0.5 * K_y * z * z;
