@@ -51,8 +51,9 @@ TEST(Cli, SummaryIsReadable) {
 TEST(Cli, IntegratorsListsOnePerLine) {
   const CliRun r = ivv("integrators");
   ASSERT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out,
-            "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ndop853\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
+  EXPECT_EQ(
+      r.out,
+      "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ndop853\ngsl-rk8pd\ngsl-msbdf\nrodas4\nmp50\n");
 }
 
 TEST(Cli, IntegratorsVerboseShowsTheTraits) {

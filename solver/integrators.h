@@ -33,6 +33,7 @@ enum class IntegratorKind {
   dop853,
   gsl_rk8pd,
   gsl_msbdf,
+  rodas4,
   mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
 };
 
