@@ -184,6 +184,45 @@ TEST(Rodas4Tableau, IsLStable) {
   EXPECT_LE(std::abs(1.0 - dot(f.to_k(m_solution()), y)), kConditionTolerance);
 }
 
+// The solves of (d I - J) u = b: the column-sparse path (J with two non-zero columns, the shape
+// of ImpactSystem's Jacobian) and the dense LU (any other J), by their residuals. Backward
+// stable solves leave |M u - b| <= c eps (|M| |u| + |b|) with c = O(N); 1e-13 allows c ~ 500.
+TEST(RosenbrockMatrix, SolvesBothTheColumnSparseAndTheDenseSystem) {
+  constexpr std::size_t n = 6;
+  using M6 = std::array<std::array<double, n>, n>;
+  M6 sparse{}, dense{};
+  for (std::size_t i = 0; i < n; ++i) {
+    sparse[i][1] = -3.0 + 0.7 * i;                  // like dF/dw
+    sparse[i][2] = 1e4 * (i % 2 ? 1.0 : -2.0) + i;  // like dF/dz: stiff, both signs
+    for (std::size_t j = 0; j < n; ++j) dense[i][j] = std::sin(1.0 + i * n + j) * (i == j ? 50 : 5);
+  }
+  for (const M6* J : {&sparse, &dense}) {
+    for (double d : {1e-3, 1.0, 4e5}) {
+      RosenbrockMatrix<double, n> E;
+      ASSERT_TRUE(E.factor(d, *J));
+      std::array<double, n> b, u;
+      for (std::size_t i = 0; i < n; ++i) b[i] = std::cos(0.3 * i) * (i + 1);
+      u = b;
+      E.solve(u);
+      for (std::size_t i = 0; i < n; ++i) {
+        double r = -b[i], scale = std::abs(b[i]);
+        for (std::size_t j = 0; j < n; ++j) {
+          const double Mij = (i == j ? d : 0.0) - (*J)[i][j];
+          r += Mij * u[j];
+          scale += std::abs(Mij * u[j]);
+        }
+        EXPECT_LE(std::abs(r), 1e-13 * scale)
+            << (J == &sparse ? "column-sparse" : "dense") << " d = " << d << " row " << i;
+      }
+    }
+  }
+  // singular: d equal to an eigenvalue of J (J = diag(2, 0, ...) in its first column only)
+  M6 singular{};
+  singular[0][0] = 2.0;
+  RosenbrockMatrix<double, n> E;
+  EXPECT_FALSE(E.factor(2.0, singular));
+}
+
 // Prothero-Robinson: y' = lambda (y - cos s) - sin s, s' = 1, y(0) = 1: y = cos t exactly for
 // every lambda; lambda << 0 makes it stiff. Time is a state (the stepper treats autonomous
 // systems), so J carries dF/ds = lambda sin s - cos s.
