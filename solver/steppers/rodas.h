@@ -311,13 +311,9 @@ class Rodas4Stepper {
         std::ostringstream os;
         os << "step size underflow at tau = " << static_cast<double>(t0_)
            << " (cannot meet rtol = " << static_cast<double>(rtol_) << ")";
-        x1_ = x0_;
-        t1_ = t0_;
         return fail(os.str());
       }
     }
-    x1_ = x0_;
-    t1_ = t0_;
     std::ostringstream os;
     os << kMaxAttempts << " rejected attempts at tau = " << static_cast<double>(t0_)
        << " (cannot meet rtol = " << static_cast<double>(rtol_) << ")";
@@ -375,7 +371,11 @@ class Rodas4Stepper {
     return true;
   }
 
-  static StepResult fail(const std::string& why) {
+  // A failed step leaves the stepper at its start (t1 = t0, x1 = x0): no state that did not
+  // pass the error test is ever exposed.
+  StepResult fail(const std::string& why) {
+    t1_ = t0_;
+    x1_ = x0_;
     return StepResult::failure(std::string(name) + ": " + why);
   }
 

@@ -403,6 +403,33 @@ TEST(Rodas4Failure, NamesItselfWhenTheToleranceCannotBeMet) {
   const StepResult r = st.step(sys);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.reason.rfind("rodas4: ", 0), 0u) << r.reason;
+  EXPECT_EQ(st.t1(), 0.0);  // left at its start, no unchecked state
+  EXPECT_EQ(st.x1()[0], 1.0);
+}
+
+// y' = 1 up to y = 1, not finite beyond: from y = 1 every stage of every step size leaves the
+// domain, so the step shrinks by 5 per attempt until it underflows and says so.
+struct EdgeOfDomain {
+  static constexpr std::size_t N = 1;
+  using value_type = double;
+  using state_type = std::array<double, 1>;
+  void operator()(const state_type& x, state_type& dxdt, double) const {
+    dxdt[0] = x[0] <= 1.0 ? 1.0 : std::nan("");
+  }
+  template <class M>
+  void jacobian(const state_type&, M& m) const {
+    m(0, 0) = 0.0;
+  }
+};
+
+TEST(Rodas4Failure, ANonFiniteStageShrinksTheStepUntilItUnderflows) {
+  const EdgeOfDomain sys;
+  Rodas4Stepper<EdgeOfDomain> st(IntegratorOptions{});
+  st.start(sys, 0.0, {1.0});
+  const StepResult r = st.step(sys);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.reason.rfind("rodas4: step size underflow", 0), 0u) << r.reason;
+  EXPECT_EQ(st.x1()[0], 1.0);
 }
 
 }  // namespace
