@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "solver/consistency.h"
+#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -382,16 +383,20 @@ TEST(Rodas4PaperScene, AgreesWithTheOtherImplicitIntegratorsWhenStiff) {
 }
 
 TEST(Rodas4PaperScene, MeetsWhatItsToleranceBoundsAgainstTheReference) {
-  // zeta = 0.1 (not stiff), e against mp50: within the accumulated bound 20 N (atol + 2 rtol)
-  // of consistency.h that every run is held to, N the accepted steps.
+  // zeta = 0.1 (not stiff), e against mp50, held to two statements: the accumulated bound
+  // 20 N (atol + 2 rtol) of consistency.h that every run is checked against (N accepted steps),
+  // and the tighter estimate --integrator auto states when it picks rodas4,
+  // kAutoErrorFactorImplicit rtol (integrator_choice.h). Measured: 0.18, 0.13 and 0.21 rtol.
+  const ImpactResult x = paper(0.1, IntegratorKind::mp50, 1e-10);
+  ASSERT_TRUE(x.separated()) << x.reason;
   for (double rtol : {1e-6, 1e-8, 1e-10}) {
     const ImpactResult r = paper(0.1, IntegratorKind::rodas4, rtol);
-    const ImpactResult x = paper(0.1, IntegratorKind::mp50, 1e-10);
-    ASSERT_TRUE(r.separated() && x.separated()) << r.reason << x.reason;
+    ASSERT_TRUE(r.separated()) << r.reason;
     IntegratorOptions opt;
     opt.rtol = opt.atol = rtol;
     EXPECT_LE(std::abs(r.e - x.e), accumulated_error_bound(r.steps, opt))
         << "rtol " << rtol << ", " << r.steps << " steps";
+    EXPECT_LE(std::abs(r.e - x.e), kAutoErrorFactorImplicit * rtol) << "rtol " << rtol;
   }
 }
 
