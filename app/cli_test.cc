@@ -51,8 +51,9 @@ TEST(Cli, SummaryIsReadable) {
 TEST(Cli, IntegratorsListsOnePerLine) {
   const CliRun r = ivv("integrators");
   ASSERT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out,
-            "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ndop853\ngsl-rk8pd\ngsl-msbdf\nmp50\n");
+  EXPECT_EQ(
+      r.out,
+      "odeint-dopri5\nodeint-rosenbrock4\nrk4\ndp45\ndop853\ngsl-rk8pd\ngsl-msbdf\nrodas4\nmp50\n");
 }
 
 TEST(Cli, IntegratorsVerboseShowsTheTraits) {
@@ -68,7 +69,7 @@ TEST(Cli, AutoIntegratorSaysWhatItChoseAndWhy) {
   const CliRun r = ivv("simulate --scene paper --v0 1 --zeta 100 --integrator auto --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["model_choice"]["integrator"], "odeint-rosenbrock4");
+  EXPECT_EQ(j["model_choice"]["integrator"], "rodas4");
   EXPECT_EQ(j["model_choice"]["route"], "integrated");  // a dashpot: no exact closed form
   EXPECT_EQ(j["model_choice"]["law"], "elastoplastic (full model, integrated)");
   EXPECT_GE(j["model_choice"]["reasons"].size(), 2u);

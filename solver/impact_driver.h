@@ -305,7 +305,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       // dashpot time scale below the contact's), which an explicit stepper must resolve
       if (System::has_dashpot && sys.two_zeta > 2.0)
         os << "; a stiff scene (zeta = " << sys.two_zeta / 2
-           << ") needs an implicit integrator (odeint-rosenbrock4, gsl-msbdf)";
+           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
       else
         os << "; raise --max-steps or loosen --rtol";
       return fail(FailureKind::integrator, os.str());

@@ -35,7 +35,7 @@ double stiffness_ratio(const Scene& scene, const DerivedParameters& p) {
 }
 
 IntegratorKind auto_integrator(const Scene& scene, const DerivedParameters& p) {
-  return stiffness_ratio(scene, p) > kStiffnessThreshold ? IntegratorKind::odeint_rosenbrock4
+  return stiffness_ratio(scene, p) > kStiffnessThreshold ? IntegratorKind::rodas4
                                                          : IntegratorKind::dop853;
 }
 
@@ -57,17 +57,17 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
                             : "no dashpot: not stiff (S = 0)");
   }
   c.integrator = auto_integrator(req.scene, p);
-  if (c.integrator == IntegratorKind::odeint_rosenbrock4) {
+  const bool implicit = traits(c.integrator).implicit;
+  if (implicit) {
     c.reasons.push_back("S > " + fmt(kStiffnessThreshold) +
                         ": stiff, an explicit method would be held to |h lambda| = O(1) by "
-                        "stability; implicit odeint-rosenbrock4 (L-stable, dense output)");
+                        "stability; implicit rodas4 (Rosenbrock 4(3), L-stable, dense output)");
   } else {
     c.reasons.push_back("S <= " + fmt(kStiffnessThreshold) +
                         ": not stiff; the eighth-order explicit dop853 (dense output) needs "
                         "the fewest evaluations at rtol " +
                         fmt(req.options.rtol));
   }
-  const bool implicit = c.integrator == IntegratorKind::odeint_rosenbrock4;
   const double factor = implicit ? kAutoErrorFactorImplicit : kAutoErrorFactorExplicit;
   c.estimated_error = factor * req.options.rtol;
   c.reasons.push_back("estimated error of e (in v0), F_max, z_max, and of t_f times e: " +

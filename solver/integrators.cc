@@ -10,16 +10,17 @@ namespace ivv {
 namespace {
 
 struct Table {
-  std::array<IntegratorTraits, 8> rows;
-  std::array<IntegratorKind, 8> kinds;
+  std::array<IntegratorTraits, 9> rows;
+  std::array<IntegratorKind, 9> kinds;
 };
 
 const Table& table() {
   static const Table t = [] {
-    Table out{{detail::traits_odeint_dopri5(), detail::traits_odeint_rosenbrock4(),
-               detail::traits_rk4(), detail::traits_dp45(), detail::traits_dop853(),
-               detail::traits_gsl_rk8pd(), detail::traits_gsl_msbdf(), detail::traits_mp50()},
-              {}};
+    Table out{
+        {detail::traits_odeint_dopri5(), detail::traits_odeint_rosenbrock4(), detail::traits_rk4(),
+         detail::traits_dp45(), detail::traits_dop853(), detail::traits_gsl_rk8pd(),
+         detail::traits_gsl_msbdf(), detail::traits_rodas4(), detail::traits_mp50()},
+        {}};
     for (std::size_t i = 0; i < out.rows.size(); ++i) {
       out.kinds[i] = out.rows[i].kind;
       // the rows are in IntegratorKind order: traits() indexes by the enumerator

@@ -13,8 +13,9 @@
 //   fixed_step    no error control: accuracy is set by IntegratorOptions::dt, not rtol
 //   fixed_step_mode  runs at the fixed step IntegratorOptions::dt with its error control off
 //                 when IntegratorOptions::fixed_step is set (convergence studies); false for
-//                 the implicit steppers, whose controllers (Rosenbrock's, the variable-order
-//                 BDF's) are not separable from the method in the libraries
+//                 the library implicit steppers, whose controllers (odeint's Rosenbrock, the
+//                 variable-order BDF) are not separable from the method, and rodas4 (see
+//                 solver/steppers/rodas.h)
 //   reference     the 50-digit yardstick, not a production integrator (slow)
 #pragma once
 
@@ -33,6 +34,7 @@ enum class IntegratorKind {
   dop853,
   gsl_rk8pd,
   gsl_msbdf,
+  rodas4,
   mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
 };
 

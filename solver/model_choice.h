@@ -40,7 +40,7 @@
 // divided by e: see solver/integrator_choice.h): closed forms kEstimateClosedForm
 // (round-off of a few operations, pow and cbrt) or the quadrature's estimate when larger;
 // route 3: the integrator's (e then exact); route 4: as above; route 5: choose_integrator()'s
-// factor (200 rtol explicit, 100 rtol implicit: solver/integrator_choice.h).
+// factor (200 rtol explicit, 300 rtol implicit: solver/integrator_choice.h).
 //
 // The ImpactResult of a closed form is complete where the form gives a field and says where it
 // does not: Newton, Poisson and energetic COR are equal by momentum and by the work of the

@@ -164,6 +164,8 @@ ImpactResult dispatch(const ValidatedRequest& v, IntegratorKind integrator,
       return detail::simulate_gsl_rk8pd(v, trajectory);
     case IntegratorKind::gsl_msbdf:
       return detail::simulate_gsl_msbdf(v, trajectory);
+    case IntegratorKind::rodas4:
+      return detail::simulate_rodas4(v, trajectory);
     case IntegratorKind::mp50:
       return detail::simulate_mp50(v, trajectory);
   }

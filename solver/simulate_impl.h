@@ -196,6 +196,7 @@ ImpactResult simulate_dp45(const ValidatedRequest&, std::vector<TrajectoryPoint>
 ImpactResult simulate_dop853(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_rk8pd(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 ImpactResult simulate_gsl_msbdf(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+ImpactResult simulate_rodas4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 ImpactResult simulate_mp50(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 
 }  // namespace ivv::detail

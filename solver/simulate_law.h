@@ -20,6 +20,7 @@
 #include "solver/steppers/odeint_rkf78_mp.h"
 #include "solver/steppers/odeint_rosenbrock4.h"
 #include "solver/steppers/rk4.h"
+#include "solver/steppers/rodas.h"
 
 namespace ivv {
 
@@ -45,6 +46,8 @@ decltype(auto) with_stepper(IntegratorKind kind, F&& f) {
       return f.template operator()<GslRk8pdStepper, double>();
     case IntegratorKind::gsl_msbdf:
       return f.template operator()<GslMsbdfStepper, double>();
+    case IntegratorKind::rodas4:
+      return f.template operator()<Rodas4Stepper, double>();
     case IntegratorKind::mp50:
       return f.template operator()<OdeintRkf78MpStepper, mp50>();
     default:

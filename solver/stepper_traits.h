@@ -26,6 +26,7 @@ IntegratorTraits traits_dp45();
 IntegratorTraits traits_dop853();
 IntegratorTraits traits_gsl_rk8pd();
 IntegratorTraits traits_gsl_msbdf();
+IntegratorTraits traits_rodas4();
 IntegratorTraits traits_mp50();
 }  // namespace detail
 

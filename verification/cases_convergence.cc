@@ -7,7 +7,9 @@
 // of e) on log(h) must match the declared order. The implicit steppers (odeint-rosenbrock4,
 // gsl-msbdf) have no fixed-step mode - their libraries do not separate the method from its
 // controller, and msbdf's order varies 1-5 by design - so their declared order is not checked
-// here; the cross-implementation cases check their accuracy.
+// here; the cross-implementation cases check their accuracy. rodas4 has one but does not offer
+// it here (its dense output is of order 3: see solver/steppers/rodas.h); rodas_test.cc checks
+// its order on problems with known solutions.
 //
 // Problem: the linearized law at 1 m/s with zeta = 0.1 (paper scene), whose COR is known in
 // closed form (oracles::solve_linear_model, eqs 22-25) and whose right-hand side is smooth
@@ -117,7 +119,7 @@ Outcome step_ends_case(IntegratorKind k) {
 // be explicit below the stiffness threshold and implicit above it.
 Outcome auto_choice_case(double rtol) {
   // the explicit choices against 200 rtol (kAutoErrorFactorExplicit); the stiff scene's implicit
-  // choice is checked against its own estimate (100 rtol) as a separate failure below
+  // choice is checked against its own estimate (300 rtol) as a separate failure below
   WorstError w;
   for (double v0 : {0.3, 1.0, 5.0})
     for (double zeta : {0.0, 0.1, 0.3}) {
@@ -293,8 +295,8 @@ void register_convergence_cases(Registry& reg) {
              "--integrator auto at rtol " + fmt(rtol) +
                  ": the chosen integrator stays within its estimated error",
              Tier::cross_implementation,
-             "the choice states estimated_error = 200 rtol for dop853, 100 rtol for "
-             "rosenbrock4 (solver/integrator_choice.h); it must hold",
+             "the choice states estimated_error = 200 rtol for dop853, 300 rtol for "
+             "rodas4 (solver/integrator_choice.h); it must hold",
              false, [rtol] { return auto_choice_case(rtol); }});
   }
   for (IntegratorKind k : production_integrators()) {
@@ -315,7 +317,7 @@ void register_convergence_cases(Registry& reg) {
            "model would",
            Tier::cross_implementation,
            "each route states its error (closed forms 1e-14 or the quadrature's estimate, the "
-           "linearized route 2 (1 + 10 zeta) D0, integrated routes 200 or 100 rtol: "
+           "linearized route 2 (1 + 10 zeta) D0, integrated routes 200 or 300 rtol: "
            "solver/model_choice.h); the case holds it to that statement against mp50",
            false, model_auto_case});
   reg.add({"convergence.work-precision",
