@@ -296,28 +296,40 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     }
   };
 
+  // A dense-output stepper's step goes on past an event that changes no branch of the law
+  // (max_displacement, peak_force: they only record the state): the rest of the same step is
+  // scanned from the event on, rather than thrown away by a restart there. `resume` says so;
+  // scan_t0/scan_x0 are where the scan of the current step starts.
+  bool resume = false;
+  T scan_t0 = 0;
+  state_type scan_x0{};
   for (;;) {
-    if (stepper.steps() >= opt.max_steps) {
-      std::ostringstream os;
-      os << Stepper::name << ": no separation after max_steps = " << opt.max_steps
-         << " steps (tau = " << static_cast<double>(stepper.t1()) << ")";
-      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
-      // dashpot time scale below the contact's), which an explicit stepper must resolve
-      if (System::has_dashpot && sys.two_zeta > 2.0)
-        os << "; a stiff scene (zeta = " << sys.two_zeta / 2
-           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
-      else
-        os << "; raise --max-steps or loosen --rtol";
-      return fail(FailureKind::integrator, os.str());
+    if (!resume) {
+      if (stepper.steps() >= opt.max_steps) {
+        std::ostringstream os;
+        os << Stepper::name << ": no separation after max_steps = " << opt.max_steps
+           << " steps (tau = " << static_cast<double>(stepper.t1()) << ")";
+        // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
+        // dashpot time scale below the contact's), which an explicit stepper must resolve
+        if (System::has_dashpot && sys.two_zeta > 2.0)
+          os << "; a stiff scene (zeta = " << sys.two_zeta / 2
+             << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
+        else
+          os << "; raise --max-steps or loosen --rtol";
+        return fail(FailureKind::integrator, os.str());
+      }
+      if (stepper.t1() > opt.tau_max) {
+        std::ostringstream os;
+        os << Stepper::name << ": no separation before tau_max = " << opt.tau_max;
+        return fail(FailureKind::integrator, os.str());
+      }
+      const StepResult step = stepper.step(sys);
+      if (!step.ok) return fail(FailureKind::integrator, step.reason);
+      scan_t0 = stepper.t0();
+      scan_x0 = stepper.x0();
     }
-    if (stepper.t1() > opt.tau_max) {
-      std::ostringstream os;
-      os << Stepper::name << ": no separation before tau_max = " << opt.tau_max;
-      return fail(FailureKind::integrator, os.str());
-    }
-    const StepResult step = stepper.step(sys);
-    if (!step.ok) return fail(FailureKind::integrator, step.reason);
-    const T t0 = stepper.t0(), t1 = stepper.t1();
+    resume = false;
+    const T t0 = scan_t0, t1 = stepper.t1();
 
     // events active on this branch
     std::array<Active, 4> active{};
@@ -328,7 +340,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     // Only a step that also reaches maximum compression needs the yield event probed (and,
     // for a dense-output stepper, its interpolant built on every loading step otherwise).
     if (loading && sys.law.segment_end(sys.branch)) {
-      const bool z_rising = sys.z_rate(stepper.x0()) > 0 && sys.z_rate(stepper.x1()) > 0;
+      const bool z_rising = sys.z_rate(scan_x0) > 0 && sys.z_rate(stepper.x1()) > 0;
       active[n_active++] = {EventKind::yield, Direction::rising, z_rising};
     }
     if (loading) active[n_active++] = {EventKind::max_compression, Direction::falling, true};
@@ -363,7 +375,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
       const state_type* xk = &s;
       if (k == 0)
-        xk = &stepper.x0();
+        xk = &scan_x0;
       else if (k == n)
         xk = &stepper.x1();
       else
@@ -454,6 +466,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
     // state, which a restart there could no longer see.
     const T coincide = T(1e-12) * (1 + (te < 0 ? -te : te));
     bool separated = false;
+    bool branch_changed = false;  // yield or max_compression: the law's next branch from te
     for (int i = 0; i < n_active; ++i) {
       const EventKind kind = active[i].kind;
       const bool happened = i == first || (found[i] && *found[i] <= te + coincide) ||
@@ -463,6 +476,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       switch (kind) {
         case EventKind::yield:
           sys.law.next_segment(sys.branch);
+          branch_changed = true;
           break;
         case EventKind::max_compression: {
           const T F = sys.force(xe);
@@ -471,6 +485,7 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
             run.tau_F_max = te;
           }
           run.tau_z_max = te;
+          branch_changed = true;
           try {
             sys.law.begin_unloading(sys.branch, T(sys.length * sys.z(xe)));
           } catch (const LawDomainError& err) {
@@ -514,6 +529,14 @@ NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
       return fail(FailureKind::integrator, os.str());
     }
     if (separated) return finish(ImpactStatus::separated, te, xe, 0.0);
+    if constexpr (Stepper::dense_output) {
+      if (opt.locate_events && !branch_changed && te < t1) {
+        resume = true;
+        scan_t0 = te;
+        scan_x0 = xe;
+        continue;
+      }
+    }
     stepper.start(sys, te, xe);
   }
 }
