@@ -236,7 +236,10 @@ LinearEstimate linear_estimate(const Scene& scene, const DerivedParameters& p, d
   LinearEstimate out;
   const double m = p.effective_mass, v0 = scene.velocity;
   const double growth = kLinearSafety * (1.0 + kLinearZetaGrowth * p.zeta);
-  // pre-screen on e alone (no quadrature, no linear solve): e_lin = gamma (eq 20) undamped
+  // pre-screen without any closed form (kLinearDifferenceFloor), then on e alone (no
+  // quadrature, no linear solve): e_lin = gamma (eq 20) undamped
+  if (!(p.v_yield > 0) || growth * kLinearDifferenceFloor / std::sqrt(v0 / p.v_yield) > rtol)
+    return out;
   const UndampedImpact nl = undamped_elastoplastic(m, p.K_h, p.z_y, v0, false, rtol);
   if (!nl.yielded) return out;
   try {  // eq 20 and the linear model throw below z_m = 2.25 z_y, where the law is undefined
