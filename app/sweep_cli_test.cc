@@ -198,6 +198,11 @@ TEST(SweepCli, SidecarDescribesTheRun) {
   EXPECT_EQ(j["grid"]["points"], 12);
   EXPECT_EQ(j["grid"]["v0"]["spec"], "0.5:5:4");
   EXPECT_EQ(j["counts"]["separated"], 12);
+  // what the choice was, per row: the undamped column by the closed form, the rest by dop853
+  EXPECT_EQ(j["counts"]["routes"]["closed-form-elastoplastic"], 4);
+  EXPECT_EQ(j["counts"]["routes"]["integrated"], 8);
+  EXPECT_EQ(j["counts"]["integrators"]["none"], 4);
+  EXPECT_EQ(j["counts"]["integrators"]["dop853"], 8);
   EXPECT_TRUE(j["tolerances"].contains("rtol"));
   EXPECT_TRUE(j["scene"].contains("mass"));
   EXPECT_FALSE(j["ivv"]["version"].get<std::string>().empty());

@@ -53,8 +53,11 @@ nlohmann::json sweep_sidecar_json(const nlohmann::json& inputs, const SweepCount
   j["csv"] = csv.filename().string();
   j["ivv"] = {{"version", ivv_version()}, {"commit", ivv_commit()}};
   j["command"] = command;
-  j["counts"] = {
-      {"separated", counts.separated}, {"captured", counts.captured}, {"failed", counts.failed}};
+  j["counts"] = {{"separated", counts.separated},
+                 {"captured", counts.captured},
+                 {"failed", counts.failed},
+                 {"routes", counts.routes},
+                 {"integrators", counts.integrators}};
   return j;
 }
 

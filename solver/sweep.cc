@@ -65,14 +65,16 @@ std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 0xcbf29ce484222325UL
   return h;
 }
 
-// The status field of a row: its index is read off sweep_csv_header(), and the fields before
-// it (numbers, the route and integrator names) hold no commas.
-std::string_view status_of(std::string_view row) {
-  static const int field = [] {
-    const std::string header = sweep_csv_header();
-    const std::string_view before(header.data(), header.find(",status,"));
-    return static_cast<int>(std::count(before.begin(), before.end(), ',')) + 1;
-  }();
+// Field `name` of a row: its index is read off sweep_csv_header(), and the fields up to the
+// status column (numbers, the route and integrator names) hold no commas.
+int column_index(std::string_view name) {
+  const std::string header = sweep_csv_header();
+  std::string key(1, ',');
+  key.append(name).push_back(',');
+  const std::size_t at = header.find(key);
+  return static_cast<int>(std::count(header.begin(), header.begin() + at, ',')) + 1;
+}
+std::string_view field_of(std::string_view row, int field) {
   std::size_t pos = 0;
   for (int f = 0; f < field && pos != std::string_view::npos; ++f) {
     pos = row.find(',', pos);
@@ -310,7 +312,11 @@ std::size_t SweepSink::done() const {
 }
 
 void SweepSink::count(const std::string& row) {
-  const std::string_view s = status_of(row);
+  static const int status = column_index("status"), route = column_index("route"),
+                   integrator = column_index("integrator");
+  ++counts_.routes[std::string(field_of(row, route))];
+  ++counts_.integrators[std::string(field_of(row, integrator))];
+  const std::string_view s = field_of(row, status);
   if (s == to_string(ImpactStatus::separated))
     ++counts_.separated;
   else if (s == to_string(ImpactStatus::captured))

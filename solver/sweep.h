@@ -77,6 +77,9 @@ std::string run_sweep_point(const SweepRequest& request, std::size_t index);
 // ---- streamed, journalled output ---------------------------------------------------------
 struct SweepCounts {
   std::size_t separated = 0, captured = 0, failed = 0;
+  // rows per route and per integrator (the CSV's columns): what --model auto and
+  // --integrator auto chose over the grid
+  std::map<std::string, std::size_t> routes, integrators;
 };
 
 struct SweepOutputOptions {
