@@ -72,6 +72,8 @@ int column_index(std::string_view name) {
   std::string key(1, ',');
   key.append(name).push_back(',');
   const std::size_t at = header.find(key);
+  if (at == std::string::npos)
+    throw std::logic_error("sweep CSV header has no column '" + std::string(name) + "'");
   return static_cast<int>(std::count(header.begin(), header.begin() + at, ',')) + 1;
 }
 std::string_view field_of(std::string_view row, int field) {
