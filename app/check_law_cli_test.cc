@@ -64,7 +64,7 @@ TEST(CheckLaw, JsonHasTheContractKeysAndTheClaimIsJudged) {
     if (c["id"] == "dynamic.expected_cor") {
       found = true;
       EXPECT_FALSE(c["passed"].get<bool>());
-      // the exact Lambert-W COR for u0 = 1.5 is 0.4877413 (oracles/hunt_crossley.h)
+      // the exact Lambert-W COR for u0 = 1.5 is 0.4877413 (closed_forms/hunt_crossley.h)
       EXPECT_NEAR(c["measured"].get<double>(), 0.5 - 0.48774126, 1e-6);
     }
   }

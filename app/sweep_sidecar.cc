@@ -1,6 +1,6 @@
 #include "app/sweep_sidecar.h"
 
-#include "app/result_json.h"
+#include "reports/impact_json.h"
 
 namespace ivv {
 
@@ -29,7 +29,7 @@ nlohmann::json sweep_inputs_json(const SweepRequest& req, const GridSpec& v0,
                         {"atol", b.options.atol},
                         {"max_steps", b.options.max_steps},
                         {"capture_cor", b.options.capture_cor}};
-  if (b.integrator == IntegratorKind::rk4) tol["dt"] = b.options.fixed_dt();
+  if (traits(b.integrator).fixed_step) tol["dt"] = b.options.fixed_dt();
   nlohmann::json j = {
       {"scene", scene_json(b.scene, derive(b.scene))},
       {"law", to_string(b.law)},

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/scene.h"
+#include "scene/scene.h"
 
 namespace ivv::bench {
 

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 #include "solver/sweep.h"
 
 namespace ivv::bench {

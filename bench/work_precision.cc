@@ -1,6 +1,6 @@
 #include "bench/work_precision.h"
 
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,9 @@
-# cmake --install: the libraries ivv::solver, ivv::oracles, ivv::conformance, the headers they
+# cmake --install: the libraries ivv::scene, ivv::closed_forms, ivv::solver, ivv::oracles,
+# ivv::conformance, the headers they
 # need, the find_package(ivv) files, and the shipped data. Installed layout under <prefix>:
-#   include/ivv/{solver,oracles,verification}/...   (#include "solver/law.h", as in the tree)
+#   include/ivv/{scene,closed_forms,solver,oracles,verification}/...   (#include "solver/law.h", as in the tree)
 #   lib/libivv_*.a, lib/cmake/ivv/ivvConfig.cmake, ivvConfigVersion.cmake, ivvTargets.cmake
-#   share/ivv/*.csv, *.md, generate_*.py, scenes/*.toml   (solver/data_dir.h finds them)
+#   share/ivv/*.csv, *.md, generate_*.py, scenes/*.toml   (scene/data_dir.h finds them)
 # Components: ivv_development (libraries, headers, CMake files) and ivv_data; the ivv program
 # (app/) installs as the default component.
 include(GNUInstallDirs)
@@ -16,10 +17,12 @@ set(IVV_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/ivv)
 file(MAKE_DIRECTORY ${PROJECT_BINARY_DIR}/share)
 file(CREATE_LINK ${PROJECT_SOURCE_DIR}/reference_data ${PROJECT_BINARY_DIR}/share/ivv SYMBOLIC)
 
+set_target_properties(ivv_scene PROPERTIES EXPORT_NAME scene)
+set_target_properties(ivv_closed_forms PROPERTIES EXPORT_NAME closed_forms)
 set_target_properties(ivv_solver PROPERTIES EXPORT_NAME solver)
 set_target_properties(ivv_oracles PROPERTIES EXPORT_NAME oracles)
 set_target_properties(ivv_conformance PROPERTIES EXPORT_NAME conformance)
-install(TARGETS ivv_solver ivv_oracles ivv_conformance EXPORT ivvTargets
+install(TARGETS ivv_scene ivv_closed_forms ivv_solver ivv_oracles ivv_conformance EXPORT ivvTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ivv_development
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ivv_development
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT ivv_development)
@@ -28,7 +31,8 @@ install(EXPORT ivvTargets NAMESPACE ivv:: DESTINATION ${IVV_INSTALL_CMAKEDIR}
 
 # Headers: all of solver/ and oracles/; of verification/ the conformance checks and what they
 # include (the battery, registry and report stay in the tree).
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/solver ${PROJECT_SOURCE_DIR}/oracles
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scene ${PROJECT_SOURCE_DIR}/closed_forms
+                  ${PROJECT_SOURCE_DIR}/solver ${PROJECT_SOURCE_DIR}/oracles
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ivv COMPONENT ivv_development
         FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_SOURCE_DIR}/verification/conformance.h
@@ -54,6 +58,6 @@ install(FILES ${PROJECT_BINARY_DIR}/ivvConfig.cmake ${PROJECT_BINARY_DIR}/ivvCon
 # ivv added to another project (add_subdirectory, FetchContent): that project's programs find
 # the data in this source tree, as a program built against an installation finds share/ivv.
 if(NOT PROJECT_IS_TOP_LEVEL)
-  target_compile_definitions(ivv_solver INTERFACE
+  target_compile_definitions(ivv_scene INTERFACE
     "$<BUILD_INTERFACE:IVV_PACKAGE_DATA_DIR=\"${PROJECT_SOURCE_DIR}/reference_data\">")
 endif()

@@ -10,7 +10,7 @@
 
 #include "app/cli_args.h"
 #include "fuzz/fuzz_targets.h"
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace {
 

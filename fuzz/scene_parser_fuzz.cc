@@ -1,4 +1,4 @@
-// Fuzz target: the scene TOML parser (solver/scene.h parse_scene_toml).
+// Fuzz target: the scene TOML parser (scene/scene.h parse_scene_toml).
 // Contract under test (SPEC §7): any text is either a valid scene, whose derived parameters
 // and scales are finite and positive, or an InputError naming a field; nothing else escapes.
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <string>
 
 #include "fuzz/fuzz_targets.h"
-#include "solver/input_error.h"
-#include "solver/scene.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
 
 namespace {
 

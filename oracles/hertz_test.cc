@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 namespace {

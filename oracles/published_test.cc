@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 namespace {

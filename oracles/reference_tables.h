@@ -4,7 +4,7 @@
 // io::CSVReader). A missing or extra column, a malformed number or a short row throws
 // ReferenceTableError whose message names the file, the line and the column.
 //
-// reference_data_dir() is the first of ivv::data_directories() (solver/data_dir.h: $IVV_DATA_DIR,
+// reference_data_dir() is the first of ivv::data_directories() (scene/data_dir.h: $IVV_DATA_DIR,
 // an installed package's share/ivv, <exe>/../share/ivv) that exists; ReferenceTableError naming
 // the places searched when none does.
 #pragma once
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/data_dir.h"
+#include "scene/data_dir.h"
 
 namespace ivv::oracles {
 

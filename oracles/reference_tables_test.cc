@@ -13,7 +13,7 @@
 #include <fstream>
 #include <string>
 
-#include "oracles/hunt_crossley.h"
+#include "closed_forms/hunt_crossley.h"
 #include "oracles/published.h"
 
 namespace ivv::oracles {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 

@@ -35,7 +35,7 @@
 // times [s].
 #pragma once
 
-#include "solver/scene.h"
+#include "scene/scene.h"
 
 namespace ivv::oracles {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "oracles/hertz.h"
-#include "solver/input_error.h"
-#include "solver/scene.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
 
 namespace ivv::oracles {
 namespace {

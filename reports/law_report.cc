@@ -4,8 +4,8 @@
 
 #include "reports/gnuplot_svg.h"
 #include "reports/html.h"
+#include "scene/input_error.h"
 #include "solver/atomic_file.h"
-#include "solver/input_error.h"
 
 namespace ivv::reports {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <set>
 
-#include "oracles/hunt_crossley.h"
+#include "closed_forms/hunt_crossley.h"
 #include "reports/companions.h"
 #include "reports/dem_benchmark.h"
 #include "reports/figure.h"
@@ -19,8 +19,8 @@
 #include "reports/provenance.h"
 #include "reports/restitution.h"
 #include "reports/speed_error.h"
+#include "scene/input_error.h"
 #include "solver/atomic_file.h"
-#include "solver/input_error.h"
 #include "solver/parallel.h"
 #include "verification/examples.h"
 #include "verification/registry.h"
@@ -590,37 +590,39 @@ void check_out_dir(const fs::path& dir) {
 }  // namespace
 
 ReportSummary write_report(const ReportOptions& opt) {
-  const auto start = Clock::now();
   if (opt.out_dir.empty()) throw InputError("--out", "an output directory is required");
-  const auto selected = verification::all_cases().matching(opt.filter);
-  if (selected.empty())
-    throw InputError("--filter", "no verification case id matches '" + opt.filter +
-                                     "' (shell-style glob with * and ?)");
+  validate_threads(opt.threads);
+  const auto selected = verification::select_cases(opt.filter);
   check_out_dir(opt.out_dir);
+  auto say = [&](const std::string& line) {
+    if (opt.progress) opt.progress(line);
+  };
+  say("verification cases: running " + std::to_string(selected.size()) + " on " +
+      (opt.threads > 0 ? std::to_string(opt.threads) : std::string("all")) + " threads");
+  const verification::BatteryResult battery = verification::run_battery(
+      selected, opt.threads, [&](std::size_t done, std::size_t total, const verification::Case& c) {
+        say("case " + std::to_string(done) + "/" + std::to_string(total) + " done: " + c.id);
+      });
+  for (const auto& r : battery.records)
+    if (!r.outcome.passed) say("case FAILED: " + r.c->id + ": " + r.outcome.detail);
+  return render(battery, opt);
+}
+
+ReportSummary render(const verification::BatteryResult& battery, const ReportOptions& opt) {
+  const auto start = Clock::now();
+  check_out_dir(opt.out_dir);
+  const auto& records = battery.records;
+  const std::size_t failed = battery.failed;
 
   SectionOptions so;
   so.quick = opt.quick;
   so.threads = opt.threads;
   so.progress = opt.progress;
   std::vector<std::pair<std::string, double>> stages;
+  stages.emplace_back("cases", battery.seconds);
 
   so.say("provenance");
   const Provenance prov = collect_provenance(opt.command_line);
-
-  so.say("verification cases: running " + std::to_string(selected.size()) + " on " +
-         (opt.threads > 0 ? std::to_string(opt.threads) : std::string("all")) + " threads");
-  auto t0 = Clock::now();
-  const auto records = verification::run_cases(
-      selected, opt.threads, [&](std::size_t done, std::size_t total, const verification::Case& c) {
-        so.say("case " + std::to_string(done) + "/" + std::to_string(total) + " done: " + c.id);
-      });
-  stages.emplace_back("cases", seconds_since(t0));
-  std::size_t failed = 0;
-  for (const auto& r : records)
-    if (!r.outcome.passed) {
-      ++failed;
-      so.say("case FAILED: " + r.c->id + ": " + r.outcome.detail);
-    }
 
   FigureBook book;
   std::vector<std::string> section_errors;
@@ -640,7 +642,7 @@ ReportSummary write_report(const ReportOptions& opt) {
     return dem_benchmark_html(records);
   });
 
-  t0 = Clock::now();
+  const auto t0 = Clock::now();
   book.render(opt.threads, so);
   stages.emplace_back("plots", seconds_since(t0));
 
@@ -688,7 +690,7 @@ ReportSummary write_report(const ReportOptions& opt) {
   summary.plots = book.size();
   summary.plot_errors = book.errors();
   summary.section_errors = section_errors.size();
-  summary.seconds = seconds_since(start);
+  summary.seconds = battery.seconds + seconds_since(start);
   summary.index_html = opt.out_dir / "index.html";
   so.say("report written: " + summary.index_html.string() + " (" + number(summary.seconds, 3) +
          " s)");

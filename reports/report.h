@@ -18,6 +18,8 @@
 #include <functional>
 #include <string>
 
+#include "verification/registry.h"
+
 namespace ivv::reports {
 
 struct ReportOptions {
@@ -40,9 +42,15 @@ struct ReportSummary {
   std::filesystem::path index_html;
 };
 
-// Throws InputError (solver/input_error.h) for an out_dir that is empty, is not a directory
-// or cannot be created, and for a filter that matches no case; std::runtime_error if a file
-// cannot be written. A section whose computation throws is reported in the page, not thrown.
+// Draws a battery that ran (verification::run_battery) into options.out_dir: the page and its
+// companions. Computes nothing that a case judges: the sections draw the studies the cases
+// read (verification/study_*.h). Throws InputError (scene/input_error.h) for an out_dir that is
+// empty, is not a directory or cannot be created; std::runtime_error if a file cannot be
+// written. A section whose drawing throws is reported in the page, not thrown.
+ReportSummary render(const verification::BatteryResult& battery, const ReportOptions& options);
+
+// run_battery(options.filter, options.threads) and render() of it. Throws as both do (and
+// InputError for a filter that matches no case).
 ReportSummary write_report(const ReportOptions& options);
 
 }  // namespace ivv::reports

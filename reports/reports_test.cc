@@ -20,8 +20,8 @@
 #include "reports/html.h"
 #include "reports/paper_figures.h"
 #include "reports/report.h"
-#include "solver/input_error.h"
-#include "solver/scene.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
 #include "verification/cases.h"
 
 namespace ivv::reports {

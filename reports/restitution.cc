@@ -162,7 +162,7 @@ RestitutionSection restitution_section(const SectionOptions& options) {
          "Each map picks μ from a target e; the exact Hunt-Crossley restitution "
          "e = [1 + W<sub>0</sub>(−(1+u<sub>0</sub>) "
          "e<sup>−(1+u<sub>0</sub>)</sup>)]/u<sub>0</sub>, "
-         "u<sub>0</sub> = μv<sub>0</sub> (SPEC §2, oracles/hunt_crossley.h), says what it "
+         "u<sub>0</sub> = μv<sub>0</sub> (SPEC §2, closed_forms/hunt_crossley.h), says what it "
          "really delivers, independently of K, m and v<sub>0</sub> (curves); the points are "
          "simulations at the targets of <code>reference_data/hunt_crossley_mu_maps.csv</code>. "
          "On the diagonal a map is exact.",

@@ -7,7 +7,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv {
 

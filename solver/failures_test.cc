@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/input_error.h"
 #include "solver/consistency.h"
 #include "solver/impact_driver.h"
-#include "solver/input_error.h"
 #include "solver/simulate.h"
 #include "solver/steppers/gsl_odeiv2.h"
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/input_error.h"
 #include "solver/consistency.h"
-#include "solver/input_error.h"
 
 namespace ivv {
 

@@ -1,32 +1,30 @@
 #include "solver/integrators.h"
 
 #include <array>
-#include <stdexcept>
+#include <utility>
 
-#include "solver/input_error.h"
-#include "solver/stepper_traits.h"
+#include "scene/input_error.h"
+#include "solver/integrator_instance.h"
 
 namespace ivv {
 namespace {
 
+template <std::size_t... I>
+std::array<IntegratorTraits, kIntegratorKinds> rows(std::index_sequence<I...>) {
+  return {detail::IntegratorInstance<I>::traits()...};
+}
+
 struct Table {
-  std::array<IntegratorTraits, 9> rows;
-  std::array<IntegratorKind, 9> kinds;
+  std::array<IntegratorTraits, kIntegratorKinds> rows;
+  std::array<IntegratorKind, kIntegratorKinds> kinds;
 };
 
+// Row i is entry i of the list, whose kind is enumerator i (static_asserts in
+// solver/integrator_list.h): traits() indexes by the enumerator.
 const Table& table() {
   static const Table t = [] {
-    Table out{
-        {detail::traits_odeint_dopri5(), detail::traits_odeint_rosenbrock4(), detail::traits_rk4(),
-         detail::traits_dp45(), detail::traits_dop853(), detail::traits_gsl_rk8pd(),
-         detail::traits_gsl_msbdf(), detail::traits_rodas4(), detail::traits_mp50()},
-        {}};
-    for (std::size_t i = 0; i < out.rows.size(); ++i) {
-      out.kinds[i] = out.rows[i].kind;
-      // the rows are in IntegratorKind order: traits() indexes by the enumerator
-      if (static_cast<std::size_t>(out.rows[i].kind) != i)
-        throw std::logic_error("integrator table order");
-    }
+    Table out{rows(std::make_index_sequence<kIntegratorKinds>{}), {}};
+    for (std::size_t i = 0; i < out.rows.size(); ++i) out.kinds[i] = out.rows[i].kind;
     return out;
   }();
   return t;
@@ -39,7 +37,7 @@ std::span<const IntegratorTraits> integrator_table() {
 }
 
 const IntegratorTraits& traits(IntegratorKind k) {
-  return table().rows.at(static_cast<std::size_t>(k));
+  return table().rows.at(static_cast<std::size_t>(k));  // std::out_of_range for a bad number
 }
 
 std::span<const IntegratorKind> all_integrators() {

@@ -1,8 +1,9 @@
-// The integrators ivv offers and what each one is: one table, built from the steppers' own
-// constants (each stepper in solver/steppers/ declares name, description, order, implicit,
-// dense_output, fixed_step and reference), read by the CLI (`ivv integrators`), the
-// benchmarks, the report's speed section, the verification cases and the automatic choice.
-// Nothing else keeps a list of integrator names or properties.
+// The integrators ivv offers and what each one is: one table, generated from the one list of
+// steppers (solver/integrator_list.h) and the steppers' own constants (each stepper in
+// solver/steppers/ declares name, description, order, implicit, dense_output, fixed_step and
+// reference), read by the CLI (`ivv integrators`), the benchmarks, the report's speed section,
+// the verification cases and the automatic choice. Nothing else keeps a list of integrator
+// names or properties; capabilities are read from the traits, never by comparing kinds.
 //
 // Traits (what each column means):
 //   order         classical order of the solution the stepper propagates (the generic
@@ -19,6 +20,7 @@
 //   reference     the 50-digit yardstick, not a production integrator (slow)
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -37,6 +39,9 @@ enum class IntegratorKind {
   rodas4,
   mp50  // the 50-digit reference (slow: the yardstick, not a production integrator)
 };
+// The number of enumerators (keep mp50 last, or name the new last one here). The list of
+// solver/integrator_list.h has exactly one entry per enumerator (a static_assert holds it).
+inline constexpr std::size_t kIntegratorKinds = static_cast<std::size_t>(IntegratorKind::mp50) + 1;
 
 struct IntegratorTraits {
   IntegratorKind kind = IntegratorKind::odeint_dopri5;

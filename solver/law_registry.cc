@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv {
 

@@ -15,12 +15,12 @@
 #include <tuple>
 #include <utility>
 
+#include "scene/scene.h"
 #include "solver/law_parameters.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hertz.h"
 #include "solver/laws/hunt_crossley.h"
 #include "solver/laws/linearized.h"
-#include "solver/scene.h"
 
 namespace ivv {
 

@@ -13,11 +13,12 @@
 //     slower than integrating), which checks it in the autochoice cases.
 //  2. closed-form hertz (energy): hertz law, no dashpot. z_m = (5 m v0^2/(4 K_h))^{2/5},
 //     F_max = K_h z_m^{3/2}, t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 (SPEC §2).
-//  3. hunt-crossley: e exactly by Lambert W (oracles/hunt_crossley.h: independent of K, m and
+//  3. hunt-crossley: e exactly by Lambert W (closed_forms/hunt_crossley.h: independent of K, m and
 //     the exponent); F_max (not at z_m: the rate term), t_f and the impulses have no closed
 //     form, so the integrator runs for them and its e is replaced by the exact one (the
 //     difference is reported).
-//  4. linearized closed form (paper eqs 22-25, oracles/linear_model.h) for the elastoplastic law
+//  4. linearized closed form (paper eqs 22-25, closed_forms/linear_model.h) for the elastoplastic
+//  law
 //     with a dashpot, where its estimated error against the nonlinear law is within rtol.
 //     Estimate: both laws have exact undamped solutions, so their relative difference
 //     D0 = max over e, z_m, F_max, t_f is known exactly at the request's v0 without a dashpot;
@@ -53,6 +54,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -100,6 +102,11 @@ struct ModelChoice {
   std::string integrator;  // the integrator that ran, "none" for a closed form
   std::vector<std::string> reasons;
   double estimated_error = 0.0;
+
+  // One line: "<law> (integrator <name>, estimated error <e>)", as the summary prints it.
+  std::string brief() const;
+  // brief() and every reason, one per line: the words every front end prints.
+  std::string full() const;
 };
 
 struct ModelRun {
@@ -114,6 +121,10 @@ ImpactResult run_model(const ValidatedRequest& request, const ModelDecision& dec
 // The decision in words; `result` adds what the run found (route 3: the integrated e).
 ModelChoice explain(const ValidatedRequest& request, const ModelDecision& decision,
                     const ImpactResult& result);
+
+// --model full with --integrator auto: the full model, integrated by `chosen`'s integrator,
+// with its reasons (route `integrated`).
+ModelChoice integrated_choice(const SimulationRequest& request, const IntegratorChoice& chosen);
 
 // --model auto for a validated request: the decision, the run and the reasons.
 ModelRun simulate_model(const ValidatedRequest& request,

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 #include "oracles/undamped_elastoplastic.h"
 
 namespace ivv {

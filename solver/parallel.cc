@@ -5,7 +5,13 @@
 #include <thread>
 #include <vector>
 
+#include "scene/input_error.h"
+
 namespace ivv {
+
+void validate_threads(int threads) {
+  if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+}
 
 int worker_count(std::size_t n, int threads) {
   const int wanted = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());

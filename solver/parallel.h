@@ -44,6 +44,10 @@ struct ParallelOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// A worker count as a user gives it (--threads): >= 0, 0 for all cores. Throws
+// InputError("--threads", ...) otherwise: the one check of every front end's thread count.
+void validate_threads(int threads);
+
 // The number of workers parallel_for would use for n items (>= 1).
 int worker_count(std::size_t n, int threads);
 

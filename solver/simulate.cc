@@ -4,8 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 #include "solver/integrator_choice.h"
+#include "solver/integrator_instance.h"
 #include "solver/model_choice.h"
 #include "solver/simulate_impl.h"
 
@@ -147,32 +148,23 @@ std::shared_ptr<const CompiledExpressions> compile_expression_law(const Simulati
 
 namespace {
 
+template <std::size_t... I>
+ImpactResult dispatch(const ValidatedRequest& v, std::size_t index,
+                      std::vector<TrajectoryPoint>* trajectory, std::index_sequence<I...>) {
+  using Run = ImpactResult (*)(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
+  static constexpr Run runs[] = {&detail::IntegratorInstance<I>::simulate...};
+  return runs[index](v, trajectory);
+}
+
 ImpactResult dispatch(const ValidatedRequest& v, IntegratorKind integrator,
                       std::vector<TrajectoryPoint>* trajectory) {
-  switch (integrator) {
-    case IntegratorKind::odeint_dopri5:
-      return detail::simulate_odeint_dopri5(v, trajectory);
-    case IntegratorKind::odeint_rosenbrock4:
-      return detail::simulate_odeint_rosenbrock4(v, trajectory);
-    case IntegratorKind::rk4:
-      return detail::simulate_rk4(v, trajectory);
-    case IntegratorKind::dp45:
-      return detail::simulate_dp45(v, trajectory);
-    case IntegratorKind::dop853:
-      return detail::simulate_dop853(v, trajectory);
-    case IntegratorKind::gsl_rk8pd:
-      return detail::simulate_gsl_rk8pd(v, trajectory);
-    case IntegratorKind::gsl_msbdf:
-      return detail::simulate_gsl_msbdf(v, trajectory);
-    case IntegratorKind::rodas4:
-      return detail::simulate_rodas4(v, trajectory);
-    case IntegratorKind::mp50:
-      return detail::simulate_mp50(v, trajectory);
-  }
+  const auto index = static_cast<std::size_t>(integrator);
+  if (index < kIntegratorKinds)
+    return dispatch(v, index, trajectory, std::make_index_sequence<kIntegratorKinds>{});
   ImpactResult r;
   r.failure = FailureKind::integrator;
-  r.reason = "no integrator with the number " + std::to_string(static_cast<int>(integrator)) +
-             " (not in all_integrators())";
+  r.reason =
+      "no integrator with the number " + std::to_string(index) + " (not in all_integrators())";
   return r;
 }
 

@@ -12,12 +12,12 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/scene.h"
 #include "solver/integrator_options.h"
 #include "solver/integrators.h"
 #include "solver/law_registry.h"
 #include "solver/laws/expression.h"
 #include "solver/result.h"
-#include "solver/scene.h"
 
 namespace ivv {
 

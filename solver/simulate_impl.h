@@ -1,5 +1,6 @@
 // Internals of simulate(): the typed run for one stepper and its conversion to SI units.
-// Included by one translation unit per integrator (integrators_*.cc) to spread compile time.
+// Included by one translation unit per integrator (generated from solver/integrator_list.h,
+// see solver/integrator_instance_impl.h) to spread compile time.
 #pragma once
 
 #include <cmath>
@@ -187,16 +188,5 @@ ImpactResult simulate_with(const ValidatedRequest& v, std::vector<TrajectoryPoin
   if (req.law == LawKind::expression) return run_expression_law(v, run);
   return with_builtin_law(req.law, req.parameters, p, run);
 }
-
-// Defined in integrators_*.cc, one per integrator.
-ImpactResult simulate_odeint_dopri5(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_odeint_rosenbrock4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_rk4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_dp45(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_dop853(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_gsl_rk8pd(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_gsl_msbdf(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_rodas4(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
-ImpactResult simulate_mp50(const ValidatedRequest&, std::vector<TrajectoryPoint>*);
 
 }  // namespace ivv::detail

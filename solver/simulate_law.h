@@ -11,50 +11,11 @@
 
 #include <vector>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
+#include "solver/integrator_list.h"
 #include "solver/simulate_impl.h"
-#include "solver/steppers/dop853.h"
-#include "solver/steppers/dp45.h"
-#include "solver/steppers/gsl_odeiv2.h"
-#include "solver/steppers/odeint_dopri5.h"
-#include "solver/steppers/odeint_rkf78_mp.h"
-#include "solver/steppers/odeint_rosenbrock4.h"
-#include "solver/steppers/rk4.h"
-#include "solver/steppers/rodas.h"
 
 namespace ivv {
-
-namespace detail {
-template <class S>
-using GslRk8pdStepper = GslStepper<S, GslMethod::rk8pd>;
-template <class S>
-using GslMsbdfStepper = GslStepper<S, GslMethod::msbdf>;
-
-// Calls f.template operator()<Stepper, Scalar>() for the integrator `kind`.
-template <class F>
-decltype(auto) with_stepper(IntegratorKind kind, F&& f) {
-  switch (kind) {
-    case IntegratorKind::odeint_rosenbrock4:
-      return f.template operator()<OdeintRosenbrock4Stepper, double>();
-    case IntegratorKind::rk4:
-      return f.template operator()<Rk4Stepper, double>();
-    case IntegratorKind::dp45:
-      return f.template operator()<Dp45Stepper, double>();
-    case IntegratorKind::dop853:
-      return f.template operator()<Dop853Stepper, double>();
-    case IntegratorKind::gsl_rk8pd:
-      return f.template operator()<GslRk8pdStepper, double>();
-    case IntegratorKind::gsl_msbdf:
-      return f.template operator()<GslMsbdfStepper, double>();
-    case IntegratorKind::rodas4:
-      return f.template operator()<Rodas4Stepper, double>();
-    case IntegratorKind::mp50:
-      return f.template operator()<OdeintRkf78MpStepper, mp50>();
-    default:
-      return f.template operator()<OdeintDopri5Stepper, double>();
-  }
-}
-}  // namespace detail
 
 // Validates the scene and options (InputError naming the field) and runs one impact of `law`.
 // Failures of the integration or of the law's domain come back in the result's status/reason.
@@ -70,8 +31,9 @@ ImpactResult simulate(const Law& law, const Scene& scene,
                                     " law depends on the deformation rate and carries its own "
                                     "damping; it runs without the series dashpot");
   const DerivedParameters p = derive(scene);
-  return detail::with_stepper(integrator, [&]<template <class> class Stepper, class T>() {
-    return detail::run_law<Stepper, T>(law, scene, options, p, trajectory);
+  return with_integrator(integrator, [&]<class Entry>() {
+    return detail::run_law<Entry::template stepper, typename Entry::scalar>(law, scene, options, p,
+                                                                            trajectory);
   });
 }
 

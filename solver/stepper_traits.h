@@ -1,5 +1,6 @@
 // Reads a stepper's declared constants into an IntegratorTraits row (solver/integrators.h).
-// Included by the integrators_*.cc units, one per stepper, each of which defines its row.
+// Used by IntegratorInstance<I>::traits() (solver/integrator_instance_impl.h), one per entry of
+// the integrator list.
 #pragma once
 
 #include "solver/impact_system.h"
@@ -16,18 +17,5 @@ constexpr IntegratorTraits stepper_traits(IntegratorKind kind) {
           S::implicit, S::dense_output, S::fixed_step,  S::fixed_step || S::fixed_step_mode,
           S::reference};
 }
-
-namespace detail {
-// Defined in integrators_*.cc beside the instantiation of simulate() for each stepper.
-IntegratorTraits traits_odeint_dopri5();
-IntegratorTraits traits_odeint_rosenbrock4();
-IntegratorTraits traits_rk4();
-IntegratorTraits traits_dp45();
-IntegratorTraits traits_dop853();
-IntegratorTraits traits_gsl_rk8pd();
-IntegratorTraits traits_gsl_msbdf();
-IntegratorTraits traits_rodas4();
-IntegratorTraits traits_mp50();
-}  // namespace detail
 
 }  // namespace ivv

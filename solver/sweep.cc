@@ -8,8 +8,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "scene/input_error.h"
 #include "solver/atomic_file.h"
-#include "solver/input_error.h"
 #include "solver/parallel.h"
 
 namespace ivv {
@@ -105,6 +105,7 @@ SimulationRequest point_request(const SweepRequest& req, std::size_t index) {
 }
 
 void validate(const SweepRequest& req) {
+  validate_threads(req.threads);
   if (req.velocities.empty()) throw InputError("--v0", "the velocity grid is empty");
   if (req.zetas.empty()) throw InputError("--zeta", "the damping grid is empty");
   const double points =

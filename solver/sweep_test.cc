@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv {
 namespace {

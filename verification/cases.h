@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "oracles/hertz.h"
-#include "solver/scene.h"
+#include "scene/scene.h"
 #include "verification/registry.h"
 
 namespace ivv::verification {

@@ -1,7 +1,7 @@
 // Analytic tier: every integrator against the closed forms of oracles/ (no integration there).
+#include "closed_forms/hunt_crossley.h"
+#include "closed_forms/linear_model.h"
 #include "oracles/hertz.h"
-#include "oracles/hunt_crossley.h"
-#include "oracles/linear_model.h"
 #include "oracles/undamped_elastoplastic.h"
 #include "verification/cases.h"
 #include "verification/support.h"

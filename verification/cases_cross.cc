@@ -1,6 +1,6 @@
 // Cross-implementation tier: every double-precision integrator against the 50-digit reference
 // (mp50), which shares only the laws and event definitions with them.
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 #include "verification/cases.h"
 #include "verification/support.h"
 #include "verification/tolerances.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "oracles/hunt_crossley.h"
+#include "closed_forms/hunt_crossley.h"
 #include "verification/cases.h"
 #include "verification/examples.h"
 #include "verification/support.h"

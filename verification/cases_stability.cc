@@ -2,8 +2,8 @@
 // says it could not; none returns a silently wrong COR.
 #include <cmath>
 
+#include "closed_forms/linear_model.h"
 #include "oracles/hertz.h"
-#include "oracles/linear_model.h"
 #include "oracles/undamped_elastoplastic.h"
 #include "solver/consistency.h"
 #include "verification/cases.h"

@@ -6,9 +6,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "closed_forms/hunt_crossley.h"
 #include "examples/laws/kuwabara_kono.h"
 #include "examples/laws/thornton.h"
-#include "oracles/hunt_crossley.h"
 #include "oracles/published.h"
 #include "verification/conformance_law.h"
 

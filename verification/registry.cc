@@ -6,6 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "scene/input_error.h"
 #include "solver/parallel.h"
 
 namespace ivv::verification {
@@ -166,6 +167,7 @@ CaseRecord run_case(const Case& c) {
 std::vector<CaseRecord> run_cases(
     const std::vector<const Case*>& cases, int threads,
     const std::function<void(std::size_t, std::size_t, const Case&)>& progress) {
+  validate_threads(threads);
   std::vector<CaseRecord> records(cases.size());
   std::size_t done = 0;
   std::mutex mutex;
@@ -178,6 +180,26 @@ std::vector<CaseRecord> run_cases(
     }
   });
   return records;
+}
+
+std::vector<const Case*> select_cases(const std::string& filter) {
+  auto selected = all_cases().matching(filter);
+  if (selected.empty())
+    throw InputError("--filter", "no verification case id matches '" + filter +
+                                     "' (shell-style glob with * and ?)");
+  return selected;
+}
+
+BatteryResult run_battery(
+    const std::vector<const Case*>& cases, int threads,
+    const std::function<void(std::size_t, std::size_t, const Case&)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  BatteryResult battery;
+  battery.records = run_cases(cases, threads, progress);
+  for (const CaseRecord& r : battery.records)
+    if (!r.outcome.passed) ++battery.failed;
+  battery.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return battery;
 }
 
 }  // namespace ivv::verification

@@ -98,6 +98,24 @@ std::vector<CaseRecord> run_cases(
     const std::vector<const Case*>& cases, int threads = 0,
     const std::function<void(std::size_t, std::size_t, const Case&)>& progress = {});
 
+// The battery: every case whose id matches `filter` (a glob; "" or "*": all), run on `threads`
+// workers. `ivv verify` and `ivv report` both run it and write its records with the same
+// writer (reports/companions.h); the report then only draws what it holds.
+struct BatteryResult {
+  std::vector<CaseRecord> records;  // in registry order
+  std::size_t failed = 0;
+  double seconds = 0.0;  // wall time of the battery (information only)
+  std::size_t passed() const { return records.size() - failed; }
+};
+
+// The cases whose id matches `filter`, in registry order; InputError("--filter") when none.
+std::vector<const Case*> select_cases(const std::string& filter);
+
+// Runs `cases` (select_cases()); InputError("--threads") for threads < 0.
+BatteryResult run_battery(
+    const std::vector<const Case*>& cases, int threads,
+    const std::function<void(std::size_t, std::size_t, const Case&)>& progress = {});
+
 bool glob_match(std::string_view pattern, std::string_view text);
 
 }  // namespace ivv::verification

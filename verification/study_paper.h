@@ -6,8 +6,8 @@
 // elastoplastic law, odeint-dopri5 at rtol 1e-12, atol 1e-14 (kTrendRtol: e, F_max, times to
 // ~1e-11 relative). SI units throughout (s, m, N, kg, m/s).
 //   Figs 2-7   v0 = 0.1, 1, 5 m/s with the paper's dashpot c = 11440 N s/m (zeta ~ 0.1): the
-//              model, the linearized closed form (oracles/linear_model.h, undefined at 0.1 m/s)
-//              and Hunt-Crossley fitted to the model's F_max and e (fit_hunt_crossley).
+//              model, the linearized closed form (closed_forms/linear_model.h, undefined at 0.1
+//              m/s) and Hunt-Crossley fitted to the model's F_max and e (fit_hunt_crossley).
 //   Fig 8      S_y = 50.5, 101, 151.5, 202, 404 MPa at 1 m/s, c held.
 //   Fig 9      m = 0.125 ... 2 kg at 1 m/s, c held.
 //   Figs 10-11 v0 = 0.1, 0.5, 1, 2, 5 m/s at zeta = 0.1.
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 #include "solver/fit_hunt_crossley.h"
 #include "solver/simulate.h"
 

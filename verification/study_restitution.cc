@@ -5,8 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "oracles/hunt_crossley.h"
-#include "oracles/linear_model.h"
+#include "closed_forms/hunt_crossley.h"
+#include "closed_forms/linear_model.h"
 #include "oracles/published.h"
 #include "oracles/reference_tables.h"
 #include "oracles/undamped_elastoplastic.h"

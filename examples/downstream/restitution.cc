@@ -7,7 +7,7 @@
 #include <string>
 
 #include "restitution_law.h"
-#include "solver/scene.h"
+#include "scene/scene.h"
 #include "solver/simulate_law.h"
 
 int main(int argc, char** argv) {

@@ -29,9 +29,9 @@
 #include <limits>
 #include <optional>
 
+#include "scene/scene.h"
 #include "solver/law.h"
 #include "solver/law_parameters.h"
-#include "solver/scene.h"
 
 namespace ivv {
 

@@ -32,10 +32,10 @@
 #include <string>
 #include <string_view>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
 #include "solver/law.h"
 #include "solver/law_parameters.h"
-#include "solver/scene.h"
 
 namespace ivv {
 

@@ -4,11 +4,11 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 
+#include "scene/scene.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hertz.h"
 #include "solver/laws/hunt_crossley.h"
 #include "solver/laws/linearized.h"
-#include "solver/scene.h"
 
 namespace ivv {
 namespace {

@@ -16,9 +16,9 @@
 #include <optional>
 #include <sstream>
 
+#include "scene/scene.h"
 #include "solver/law.h"
 #include "solver/law_parameters.h"
-#include "solver/scene.h"
 
 namespace ivv {
 

@@ -45,7 +45,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/scene.h"
+#include "scene/scene.h"
 
 namespace ivv::oracles {
 

@@ -1,11 +1,11 @@
-#include "solver/scene.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 #include "solver/simulate.h"
 
 namespace ivv {

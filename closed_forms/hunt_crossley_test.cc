@@ -1,5 +1,5 @@
 // Tests of the exact Hunt-Crossley restitution and the damping maps (hunt_crossley.h).
-#include "oracles/hunt_crossley.h"
+#include "closed_forms/hunt_crossley.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "oracles/hertz.h"
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 namespace {

@@ -1,6 +1,6 @@
 // Tests of the closed-form linearized model (linear_model.h), on the paper's Table 1 scene
 // (K_h, K_y, m) unless stated.
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <numbers>
 #include <string>
 
-#include "solver/input_error.h"
-#include "solver/scene.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
 
 namespace ivv::oracles {
 namespace {

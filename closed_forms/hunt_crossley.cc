@@ -1,4 +1,4 @@
-#include "oracles/hunt_crossley.h"
+#include "closed_forms/hunt_crossley.h"
 
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <boost/math/special_functions/log1p.hpp>
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 

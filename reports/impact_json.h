@@ -1,10 +1,13 @@
-// JSON views of scenes and results (the `ivv simulate --json` contract of SPEC §5).
+// JSON views of scenes and impact results: the one writer of the `ivv simulate --json` contract
+// (SPEC §5), used by every front end that prints an impact.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include "scene/scene.h"
+#include "solver/model_choice.h"
+#include "solver/request_options.h"
 #include "solver/result.h"
-#include "solver/scene.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -16,5 +19,9 @@ nlohmann::json result_json(const ImpactResult& r);
 // expression law, its expressions and contact end.
 nlohmann::json law_json(const SimulationRequest& req);
 nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult& r);
+// {"model", "route", "law", "integrator", "reasons", "estimated_error"}: what ran and why.
+nlohmann::json model_choice_json(const ModelChoice& choice, ModelKind model);
+// simulation_json() of the run, with "model_choice" where a choice was made.
+nlohmann::json simulation_json(const SimulationRun& run);
 
 }  // namespace ivv

@@ -1,4 +1,4 @@
-#include "solver/scene.h"
+#include "scene/scene.h"
 
 #include <toml++/toml.h>
 #include <array>
@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv {
 namespace {
@@ -127,7 +127,7 @@ void validate_derived(const Scene& s) {
       check("c", p.c, dynamic | 0b1000000);
     }
   }
-  // the scales of every basis a law may use on this scene (solver/scene.h ScaleBasis)
+  // the scales of every basis a law may use on this scene (scene/scene.h ScaleBasis)
   for (ScaleBasis basis : {ScaleBasis::hertz, ScaleBasis::yield}) {
     if (basis == ScaleBasis::yield && !yield_given) continue;
     const unsigned d = basis == ScaleBasis::yield ? dynamic : stiffness | 0b0001 | 0b100000;

@@ -29,15 +29,15 @@
 //          alpha_bar = alpha/z_mH, F_bar = F/(m* v0 omega). A Hertz contact lasts tau = 2.943.
 #pragma once
 
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "solver/data_dir.h"
+#include "scene/data_dir.h"
 
 namespace ivv {
 
@@ -158,7 +158,7 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name);
 
 // "paper" names the built-in scene; an existing file path is read; otherwise a bare name
 // (no '/' and no ".toml") is looked up as scenes/NAME.toml in data_directories()
-// (solver/data_dir.h: $IVV_DATA_DIR, an installed package's share/ivv, <exe>/../share/ivv), e.g.
+// (scene/data_dir.h: $IVV_DATA_DIR, an installed package's share/ivv, <exe>/../share/ivv), e.g.
 // "chung-ooi-2-aluminium".
 Scene load_scene(const std::string& name_or_path);
 

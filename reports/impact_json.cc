@@ -1,4 +1,4 @@
-#include "app/result_json.h"
+#include "reports/impact_json.h"
 
 #include <cmath>
 #include <optional>
@@ -118,7 +118,7 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
                             {"integrator", to_string(req.integrator)},
                             {"rtol", req.options.rtol},
                             {"atol", req.options.atol}};
-  if (req.integrator == IntegratorKind::rk4) request["dt"] = req.options.fixed_dt();
+  if (traits(req.integrator).fixed_step) request["dt"] = req.options.fixed_dt();
   const nlohmann::json law = law_json(req);  // named: items() of a temporary would dangle
   for (const auto& [key, value] : law.items()) request[key] = value;
   if (req.law == LawKind::hunt_crossley) {  // the names of the contract (SPEC §5)
@@ -126,6 +126,21 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
     request["hc_mu"] = request["parameters"]["mu"];
   }
   return {{"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
+}
+
+nlohmann::json model_choice_json(const ModelChoice& c, ModelKind model) {
+  return {{"model", to_string(model)},
+          {"route", to_string(c.decision.route)},
+          {"law", c.law},
+          {"integrator", c.integrator},
+          {"reasons", c.reasons},
+          {"estimated_error", c.estimated_error}};
+}
+
+nlohmann::json simulation_json(const SimulationRun& run) {
+  nlohmann::json j = simulation_json(run.request, run.result);
+  if (run.choice) j["model_choice"] = model_choice_json(*run.choice, run.request.model);
+  return j;
 }
 
 }  // namespace ivv

@@ -1,4 +1,4 @@
-#include "solver/data_dir.h"
+#include "scene/data_dir.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "oracles/linear_model.h"
+#include "closed_forms/linear_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "solver/input_error.h"
+#include "scene/input_error.h"
 
 namespace ivv::oracles {
 

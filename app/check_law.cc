@@ -1,0 +1,123 @@
+// ivv check-law: a contact law (--force EXPR, or --law NAME) through the conformance checks
+// (verification/conformance.h), with a verdict per check; --report DIR writes its HTML page.
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "app/cli_args.h"
+#include "app/command.h"
+#include "app/model_flags.h"
+#include "reports/law_report.h"
+#include "scene/input_error.h"
+#include "verification/conformance.h"
+
+namespace ivv::app {
+namespace {
+
+struct CheckLawFlags {
+  std::string expect_cor;
+  std::optional<double> cor_tolerance;
+  bool elastic_at_low_speed = false;
+  bool no_monotone = false;
+  std::string v0_grid, zeta_grid;
+  bool json = false;
+  std::string report_dir;
+};
+
+int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& command_line) {
+  if (f.scene.empty()) f.scene = "paper";
+  if (f.force.empty() && f.law == "elastoplastic" && f.params.empty() && !f.hc_k && !f.hc_mu)
+    throw InputError("--force", "give the law to check: --force EXPR (or --law NAME)");
+  const SimulationRequest req = to_request(to_options(f));
+  conformance::Grid grid = conformance::default_grid(req.scene);
+  grid.options = req.options;
+  if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0", false);
+  for (double v : grid.velocities)
+    if (!(v > 0)) throw InputError("--v0", "velocities must be > 0 m/s");
+  if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta", false);
+  for (double z : grid.zetas)
+    if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
+  conformance::Claims claims;
+  claims.elastic_at_low_speed = c.elastic_at_low_speed;
+  claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping = !c.no_monotone;
+  if (!c.expect_cor.empty()) {
+    claims.expected_cor = compile_cor_claim(c.expect_cor, req.parameters, req.scene);
+    claims.expected_cor_text = c.expect_cor;
+  }
+  if (c.cor_tolerance) {
+    if (!(*c.cor_tolerance > 0 && *c.cor_tolerance < 1))
+      throw InputError("--cor-tolerance", "must lie in (0, 1)");
+    claims.cor_tolerance = *c.cor_tolerance;
+    claims.cor_tolerance_reason = "given on the command line (--cor-tolerance)";
+  }
+  if (!c.report_dir.empty()) reports::check_report_dir(c.report_dir);
+  const conformance::Report report =
+      conformance::run_conformance(conformance::registry_law(req), claims, grid);
+  if (!c.report_dir.empty()) {
+    const auto index = reports::write_law_report(report, c.report_dir, command_line);
+    std::cerr << "ivv check-law: wrote " << index.string() << "\n";
+  }
+  if (c.json) {
+    nlohmann::json j = conformance::to_json(report);
+    j["law"]["parameters"] = req.parameters;
+    if (req.law == LawKind::expression) {
+      j["law"]["force"] = req.expression.force;
+      j["law"]["unload"] = req.expression.unload;
+      j["law"]["allow_tension"] = req.expression.allow_tension;
+    }
+    j["law"]["scene"] = req.scene.name;
+    if (claims.expected_cor) j["law"]["expect_cor"] = c.expect_cor;
+    std::cout << j.dump(2) << std::endl;
+  } else {
+    std::cout << report.full();
+  }
+  return report.passed() ? 0 : kExitFailure;
+}
+
+class CheckLaw final : public Command {
+ public:
+  explicit CheckLaw(CLI::App& app)
+      : Command(app.add_subcommand(
+            "check-law",
+            "put a contact law (--force EXPR, or --law NAME) through the conformance checks")) {
+    add_flags(cli());
+  }
+
+  int run(const Invocation& inv) override {
+    return run_check_law(flags_, check_, inv.command_line);
+  }
+
+ private:
+  void add_flags(CLI::App& cmd);
+  ModelFlags flags_;
+  CheckLawFlags check_;
+};
+
+void CheckLaw::add_flags(CLI::App& cmd) {
+  add_model_flags(cmd, flags_, false, false);
+  cmd.add_option("--expect-cor", check_.expect_cor,
+                 "the COR the law is meant to deliver: an expression in v0, the scene's "
+                 "constants and --param names");
+  cmd.add_option("--cor-tolerance", check_.cor_tolerance,
+                 "allowed |e - expected| (default 1e-9: 10x the reference's error of e)");
+  cmd.add_flag("--elastic-at-low-speed", check_.elastic_at_low_speed,
+               "claim e -> 1 as v0 -> 0 (checked)");
+  cmd.add_flag("--no-monotone", check_.no_monotone,
+               "do not claim that e falls with v0 and with damping");
+  cmd.add_option("--v0", check_.v0_grid,
+                 "velocity grid [m/s], LO:HI:N or a,b,c (default: 7 points over three decades "
+                 "around the scene's v0)");
+  cmd.add_option("--zeta", check_.zeta_grid,
+                 "damping ratios of the series dashpot (default 0,0.1; rate-dependent laws: 0 "
+                 "only)");
+  cmd.add_flag("--json", check_.json, "print the verdict and every check as JSON");
+  cmd.add_option("--report", check_.report_dir, "write DIR/index.html for this law");
+}
+
+}  // namespace
+
+std::unique_ptr<Command> make_check_law(CLI::App& app) {
+  return std::make_unique<CheckLaw>(app);
+}
+
+}  // namespace ivv::app

@@ -1,0 +1,52 @@
+// The shape of every `ivv` subcommand: one file per subcommand under app/, each a Command that
+// declares its flags on the parser and runs when the user names it. A command parses and
+// prints; what it prints is computed by the libraries (solver, oracles, verification, reports).
+//
+// Exit codes (SPEC §5): 0 success; 1 a computation or a check failed (with the reason);
+// 2 bad input (the message names the field and the accepted range; InputError).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+
+namespace ivv::app {
+
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+// The process's command line, for the commands that record or repeat it.
+struct Invocation {
+  int argc = 0;
+  char** argv = nullptr;
+  std::string command_line;  // argv joined by spaces
+};
+
+class Command {
+ public:
+  virtual ~Command() = default;
+  // The parser node that says whether the user named this command.
+  CLI::App& cli() const { return *cli_; }
+  virtual int run(const Invocation& invocation) = 0;
+
+ protected:
+  explicit Command(CLI::App* cli) : cli_(cli) {}
+
+ private:
+  CLI::App* cli_;
+};
+
+// Each adds its subcommand (and its flags) to `app`; defined in app/<name>.cc.
+std::unique_ptr<Command> make_simulate(CLI::App& app);
+std::unique_ptr<Command> make_sweep(CLI::App& app);
+std::unique_ptr<Command> make_scene_show(CLI::App& app);
+std::unique_ptr<Command> make_integrators(CLI::App& app);
+std::unique_ptr<Command> make_laws(CLI::App& app);
+std::unique_ptr<Command> make_fit_hc(CLI::App& app);
+std::unique_ptr<Command> make_verify(CLI::App& app);
+std::unique_ptr<Command> make_report(CLI::App& app);
+std::unique_ptr<Command> make_check_law(CLI::App& app);
+std::unique_ptr<Command> make_bench(CLI::App& app);
+
+}  // namespace ivv::app

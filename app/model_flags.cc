@@ -1,0 +1,90 @@
+#include "app/model_flags.h"
+
+#include <limits>
+
+#include "app/cli_args.h"
+
+namespace ivv::app {
+namespace {
+
+std::optional<double> number(const std::optional<std::string>& text, const std::string& field) {
+  if (!text) return std::nullopt;
+  return parse_number(*text, field);
+}
+
+}  // namespace
+
+void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
+                     bool scene_required) {
+  auto* scene =
+      cmd.add_option("--scene", f.scene,
+                     "scene file (TOML, SPEC §5), 'paper' (Table 1), or a shipped scene's name");
+  if (scene_required) scene->required();
+  if (with_velocity_and_damping) {
+    cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
+    auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
+    auto* c = cmd.add_option("--c", f.c, "dashpot coefficient [N s/m]");
+    auto* n = cmd.add_flag("--no-dashpot", f.no_dashpot, "ignore the scene's dashpot");
+    z->excludes(c)->excludes(n);
+    c->excludes(n);
+  }
+  auto* law = cmd.add_option("--law", f.law, "contact law (see `ivv laws`)")->capture_default_str();
+  auto* force = cmd.add_option(
+      "--force", f.force,
+      "expression law: loading force [N] in z, zdot, zmax, m, R, E_star, K_h, z_y, K_y, v0 and "
+      "--param names (muParser), e.g. 'K_h*z^1.5'");
+  force->excludes(law);
+  cmd.add_option("--unload", f.unload,
+                 "expression law: unloading force [N] after dz/dt = 0 (zmax = z_m); default: "
+                 "the --force expression")
+      ->needs(force);
+  cmd.add_flag("--allow-tension", f.allow_tension,
+               "expression law: F may go negative and contact ends at z = 0 (default: F >= 0, "
+               "contact ends at F = 0)")
+      ->needs(force);
+  cmd.add_option("--param", f.params,
+                 "law parameter NAME=VALUE (repeatable; `ivv laws -v` lists each law's)");
+  cmd.add_option("--integrator", f.integrator,
+                 "integrator (see `ivv integrators`), or auto: chosen by stiffness")
+      ->capture_default_str();
+  cmd.add_option("--model", f.model,
+                 "auto: what the scene needs within --rtol (exact closed forms where they exist, "
+                 "the linearized closed form where its estimated error is within --rtol, else "
+                 "the integrator); full: always integrate the law's ODE model")
+      ->capture_default_str();
+  cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
+  cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
+  cmd.add_option("--dt", f.dt,
+                 "fixed step of rk4 in normalised time tau = omega t (default 1e-3; omega = "
+                 "omega0 for laws with yield, v0/z_mH for hertz and hunt-crossley)");
+  cmd.add_option("--max-steps", f.max_steps,
+                 "give up after this many steps (default " +
+                     std::to_string(IntegratorOptions{}.max_steps) + ")");
+  cmd.add_option("--hc-k", f.hc_k,
+                 "Hunt-Crossley stiffness K [N/m^1.5] (default: the scene's K_h)");
+  cmd.add_option("--hc-mu", f.hc_mu, "Hunt-Crossley damping mu [s/m] (default 0)");
+}
+
+RequestOptions to_options(const ModelFlags& f) {
+  RequestOptions o;
+  o.scene = f.scene;
+  o.v0 = number(f.v0, "--v0");
+  o.zeta = number(f.zeta, "--zeta");
+  o.c = number(f.c, "--c");
+  o.no_dashpot = f.no_dashpot;
+  o.law = f.law;
+  o.expression = {f.force, f.unload, f.allow_tension};
+  o.integrator = f.integrator;
+  o.model = f.model;
+  o.rtol = number(f.rtol, "--rtol");
+  o.atol = number(f.atol, "--atol");
+  o.dt = number(f.dt, "--dt");
+  if (f.max_steps)
+    o.max_steps = parse_count(*f.max_steps, "--max-steps", 1, std::numeric_limits<long>::max());
+  o.hc_k = number(f.hc_k, "--hc-k");
+  o.hc_mu = number(f.hc_mu, "--hc-mu");
+  o.parameters = parse_parameters(f.params);
+  return o;
+}
+
+}  // namespace ivv::app

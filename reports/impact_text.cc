@@ -1,0 +1,105 @@
+#include "reports/impact_text.h"
+
+#include <iomanip>
+#include <sstream>
+
+namespace ivv {
+
+namespace {
+
+// The outcome of a run that separated or was captured.
+void outcome_lines(std::ostream& out, const SimulationRequest& req, const ImpactResult& r,
+                   const DerivedParameters& p) {
+  out << std::setprecision(8);
+  out << "  COR          e = " << r.e;
+  if (r.status == ImpactStatus::captured) out << " (captured: e <= " << r.e_bound << ")";
+  out << "  (Poisson " << r.e_poisson << ", energetic " << r.e_energetic << ")\n";
+  out << std::setprecision(6);
+  out << "  peak force   F_max = " << r.F_max << " N at t = " << r.t_F_max * 1e3 << " ms\n";
+  out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
+  out << "  deformation  z_max = " << r.z_max * 1e3 << " mm, alpha_max = " << r.alpha_max * 1e3
+      << " mm, z_perm = " << r.z_perm * 1e3 << " mm\n";
+  out << "  energy [J]   initial " << r.energy.initial << " = final " << r.energy.final
+      << " + plastic " << r.energy.plastic << " + viscous " << r.energy.viscous;
+  if (r.energy.stored > 0) out << " + stored " << r.energy.stored;
+  out << " + residual " << r.energy.residual << "\n";
+  out << "  impulse      " << r.impulse
+      << " N s (m* v0 (1 + e) = " << p.effective_mass * req.scene.velocity * (1 + r.e) << ")\n";
+  if (req.scene.free_target()) {
+    out << "  after impact impactor " << r.impactor_velocity_after << " m/s, target "
+        << r.target_velocity_after << " m/s (frame: target at rest before; + towards it)\n";
+  }
+  out << "  work         " << r.steps << " steps, " << r.rhs_evaluations << " RHS evaluations\n";
+}
+
+}  // namespace
+
+std::string impact_summary(const SimulationRun& run) {
+  const SimulationRequest& req = run.request;
+  const ImpactResult& r = run.result;
+  std::ostringstream out;
+  const DerivedParameters p = derive(req.scene);
+  out << std::setprecision(6);
+  out << "scene " << req.scene.name << ", law " << to_string(req.law) << ", integrator "
+      << to_string(req.integrator) << "\n";
+  out << "  v0 = " << req.scene.velocity << " m/s";
+  if (p.has_yield()) out << " (v_y = " << p.v_yield << " m/s)";
+  out << ", ";
+  if (p.has_dashpot() && p.has_yield())
+    out << "zeta = " << p.zeta << " (c = " << p.c << " N s/m)\n";
+  else if (p.has_dashpot())
+    out << "c = " << p.c << " N s/m\n";
+  else
+    out << "no dashpot\n";
+  out << "  status       " << to_string(r.status);
+  if (!r.reason.empty()) out << ": " << r.reason;
+  out << "\n";
+  if (r.ok()) outcome_lines(out, req, r, p);
+  if (run.choice && req.model == ModelKind::automatic)
+    out << "  model        " << run.choice->brief() << "; --model full to integrate always\n";
+  return out.str();
+}
+
+std::string scene_summary(const Scene& s) {
+  const DerivedParameters p = derive(s);
+  std::ostringstream out;
+  out << std::setprecision(6) << "scene " << s.name << "\n"
+      << "  impactor  m = " << s.mass << " kg, R = " << s.radius
+      << " m, E1 = " << s.impactor_youngs_modulus << " Pa, nu1 = " << s.impactor_poisson_ratio
+      << "\n";
+  out << "  target    ";
+  if (s.free_target())
+    out << "free sphere m2 = " << *s.target_mass << " kg, R2 = " << *s.target_radius << " m, ";
+  else
+    out << "half-space, ";
+  if (s.rigid_target())
+    out << "rigid target (E2 = inf)";
+  else
+    out << "E2 = " << s.target_youngs_modulus << " Pa, nu2 = " << s.target_poisson_ratio;
+  if (s.yield_strength)
+    out << ", S_y = " << *s.yield_strength << " Pa\n";
+  else
+    out << ", no yield strength (laws without yield only: hertz, hunt-crossley)\n";
+  out << "  impact    v0 = " << s.velocity << " m/s"
+      << (s.free_target() ? " (relative approach speed)" : "") << "\n"
+      << "derived\n"
+      << "  R*     = " << p.effective_radius << " m\n"
+      << "  m*     = " << p.effective_mass << " kg\n"
+      << "  E*     = " << p.E_star << " Pa" << (s.rigid_target() ? " (rigid target)" : "") << "\n"
+      << "  K_h    = " << p.K_h << " N/m^1.5\n";
+  if (p.has_yield()) {
+    out << "  z_y    = " << p.z_y << " m\n"
+        << "  K_y    = " << p.K_y << " N/m\n"
+        << "  omega0 = " << p.omega0 << " rad/s\n"
+        << "  v_y    = " << p.v_yield << " m/s\n";
+  }
+  if (p.has_dashpot() && p.has_yield())
+    out << "  zeta   = " << p.zeta << ", c = " << p.c << " N s/m\n";
+  else if (p.has_dashpot())
+    out << "  c      = " << p.c << " N s/m\n";
+  else
+    out << "  no dashpot (c = inf, zeta = 0)\n";
+  return out.str();
+}
+
+}  // namespace ivv

@@ -1,0 +1,153 @@
+// ModelChoice in words (solver/model_choice.h): the reasons `simulate --json` prints under
+// model_choice, for each route of --model auto, and what a ModelChoice says of itself.
+#include <cmath>
+#include <sstream>
+
+#include "solver/integrator_choice.h"
+#include "solver/laws/hunt_crossley.h"
+#include "solver/model_choice.h"
+
+namespace ivv {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(3);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const ImpactResult& r) {
+  const SimulationRequest& req = v.request();
+  const DerivedParameters& p = v.derived();
+  ModelChoice c;
+  c.decision = d;
+  c.estimated_error = d.estimated_error;
+  const std::string law(to_string(req.law));
+  const std::string integrator(to_string(d.integrator));
+  auto integrator_words = [&] {
+    if (req.auto_integrator)
+      for (std::string& why : choose_integrator(req).reasons) c.reasons.push_back(std::move(why));
+    else
+      c.reasons.push_back("integrator " + integrator + " as requested (--integrator)");
+  };
+  switch (d.route) {
+    case ModelRoute::closed_form_elastoplastic:
+      c.law = "closed-form elastoplastic (energy)";
+      c.integrator = "none";
+      c.reasons.push_back(
+          "elastoplastic law without a dashpot: z_m, F_max, z_f, e and the hysteresis work "
+          "exactly by energy (SPEC §2); t_f in closed form on the loading legs and by "
+          "Gauss-Legendre quadrature on the unloading leg; no integration");
+      c.reasons.push_back(
+          "events: onset, maximum compression (= maximum displacement) and separation; the "
+          "yield event's time is not computed by the closed form (absent)");
+      c.reasons.push_back("estimated relative error: round-off (" + fmt(kEstimateClosedForm) +
+                          "); the contact time's quadrature within rtol/10");
+      break;
+    case ModelRoute::closed_form_hertz:
+      c.law = "closed-form hertz (energy)";
+      c.integrator = "none";
+      c.reasons.push_back(
+          "hertz law without a dashpot: z_m = (5 m v0^2/(4 K_h))^(2/5), F_max = K_h z_m^1.5, "
+          "t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 exactly (SPEC §2); no integration");
+      c.reasons.push_back("estimated relative error: round-off (" + fmt(kEstimateClosedForm) + ")");
+      break;
+    case ModelRoute::hunt_crossley_lambert_w: {
+      c.law = "hunt-crossley: e by Lambert W, the rest integrated";
+      c.integrator = integrator;
+      const double mu = HuntCrossleyLaw::make(req.parameters, p).mu;
+      c.reasons.push_back(
+          "hunt-crossley: e = [1 + W0(-(1 + u0) e^-(1 + u0))]/u0 exactly (u0 = mu v0 = " +
+          fmt(mu * req.scene.velocity) +
+          ", SPEC §2); F_max, t_f, z_max and the impulses have no closed form: integrated");
+      integrator_words();
+      if (r.separated())
+        c.reasons.push_back("the integrated Poisson COR " + fmt(r.e_poisson) +
+                            " against the exact e " + fmt(r.e) + ": difference " +
+                            fmt(std::abs(r.e_poisson - r.e)));
+      c.reasons.push_back("estimated relative error of F_max, t_f: the integrator's, " +
+                          fmt(d.estimated_error) + "; e exact");
+      break;
+    }
+    case ModelRoute::linearized_closed_form:
+      c.law = "linearized closed form (paper eqs 22-25)";
+      c.integrator = "none";
+      if (req.law == LawKind::linearized) {
+        c.reasons.push_back(
+            "the linearized law has an exact closed form (paper eqs 22-25, "
+            "closed_forms/linear_model.h); no integration");
+      } else {
+        c.reasons.push_back(
+            "elastoplastic law with a dashpot at rtol " + fmt(req.options.rtol) +
+            ": the linearized closed form's estimated error " + fmt(d.estimated_error) +
+            " = 2 (1 + 10 zeta) D0 with D0 = " + fmt(d.linear_difference) +
+            " (the exact undamped difference of the two laws in e, z_m, F_max, t_f) is within "
+            "rtol; its unloading damping ratio zeta1 <= " +
+            fmt(kLinearMaxUnloadingDamping) + " (far from capture)");
+      }
+      break;
+    case ModelRoute::integrated:
+      c.law = law + " (full model, integrated)";
+      c.integrator = integrator;
+      if (req.law == LawKind::expression)
+        c.reasons.push_back("an expression law has no closed form: integrated");
+      else if (req.law == LawKind::elastoplastic) {
+        std::string why = "elastoplastic with a dashpot: no exact closed form; ";
+        if (d.linear_difference >= 0)
+          why += "the linearized closed form's estimated error 2 (1 + 10 zeta) D0 = " +
+                 fmt(kLinearSafety * (1 + kLinearZetaGrowth * p.zeta) * d.linear_difference) +
+                 " (D0 = " + fmt(d.linear_difference) + ") exceeds rtol " + fmt(req.options.rtol) +
+                 " or its unloading is near capture";
+        else
+          why += "the linearized closed form is not within rtol " + fmt(req.options.rtol) +
+                 " (its undamped difference in e alone exceeds it) or is undefined here";
+        c.reasons.push_back(why);
+      } else if (req.law == LawKind::linearized) {
+        c.reasons.push_back(
+            "the linearized law is undefined here (z_m < 2.25 z_y): run so that "
+            "the integrator names the failure");
+      } else {
+        c.reasons.push_back(law + " with a dashpot: no exact closed form; integrated");
+      }
+      integrator_words();
+      c.reasons.push_back(
+          "capture, if any, by the driver's criterion: the rebound still "
+          "attainable from the remaining energy, sqrt(w^2 + 2U), below "
+          "capture_cor = " +
+          fmt(req.options.capture_cor));
+      if (!req.auto_integrator)  // choose_integrator's reasons state it otherwise
+        c.reasons.push_back("estimated relative error of e, F_max, t_f: " + fmt(d.estimated_error) +
+                            " (the integrator's global error)");
+      break;
+  }
+  return c;
+}
+
+ModelChoice integrated_choice(const SimulationRequest& req, const IntegratorChoice& chosen) {
+  ModelChoice c;
+  c.decision.route = ModelRoute::integrated;
+  c.decision.integrator = chosen.integrator;
+  c.decision.estimated_error = chosen.estimated_error;
+  c.law = std::string(to_string(req.law)) + " (full model, integrated)";
+  c.integrator = std::string(to_string(chosen.integrator));
+  c.reasons = chosen.reasons;
+  c.estimated_error = chosen.estimated_error;
+  return c;
+}
+
+std::string ModelChoice::brief() const {
+  std::ostringstream os;
+  os << law << " (integrator " << integrator << ", estimated error " << estimated_error << ")";
+  return os.str();
+}
+
+std::string ModelChoice::full() const {
+  std::string out = brief() + "\n";
+  for (const std::string& why : reasons) out += "  - " + why + "\n";
+  return out;
+}
+
+}  // namespace ivv

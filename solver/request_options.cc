@@ -1,0 +1,119 @@
+#include "solver/request_options.h"
+
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "scene/input_error.h"
+#include "solver/integrator_choice.h"
+
+namespace ivv {
+namespace {
+
+// A scene key or law parameter and the override that replaces it.
+struct Override {
+  std::string_view field;  // as the validation names it
+  std::string_view flag;   // as the user typed it
+  bool given;
+};
+
+// The value, in the scene, of every override the options carry.
+void apply_scene_overrides(const RequestOptions& o, Scene& scene) {
+  if (o.v0) scene.velocity = *o.v0;
+  if (o.zeta) scene.damping = Damping::ratio(*o.zeta);
+  if (o.c) scene.damping = Damping::coefficient(*o.c);
+  if (o.no_dashpot) scene.damping = Damping::none();
+}
+
+void apply_law(const RequestOptions& o, SimulationRequest& req) {
+  if (!o.expression.force.empty()) {
+    req.law = LawKind::expression;
+    req.expression = o.expression;
+  } else {
+    if (!o.expression.unload.empty())
+      throw InputError("--unload", "needs a loading expression (--force)");
+    req.law = parse_law(o.law);
+  }
+  req.parameters = o.parameters;
+  if (o.hc_k || o.hc_mu) {
+    if (req.law != LawKind::hunt_crossley)
+      throw InputError(o.hc_k ? "--hc-k" : "--hc-mu",
+                       "only the hunt-crossley law has K and mu (--law hunt-crossley)");
+    if (o.hc_k) req.parameters["K"] = *o.hc_k;
+    if (o.hc_mu) req.parameters["mu"] = *o.hc_mu;
+  }
+}
+
+void apply_integration(const RequestOptions& o, SimulationRequest& req) {
+  req.auto_integrator = o.integrator == "auto";
+  // auto: a placeholder until run_simulation() (or each sweep point) chooses
+  req.integrator = req.auto_integrator ? IntegratorKind::dop853 : parse_integrator(o.integrator);
+  req.model = parse_model(o.model);
+  if (o.rtol) req.options.rtol = *o.rtol;
+  if (o.atol) req.options.atol = *o.atol;
+  if (o.dt) {
+    // 0 stands for "the default step" inside IntegratorOptions; typed, it is no step at all
+    require(*o.dt > 0, "--dt", "a normalised step > 0", *o.dt);
+    req.options.dt = *o.dt;
+  }
+  if (o.max_steps) req.options.max_steps = *o.max_steps;
+}
+
+}  // namespace
+
+SimulationRequest to_request(const RequestOptions& o) {
+  SimulationRequest req;
+  req.scene = load_scene(o.scene);
+  apply_scene_overrides(o, req.scene);
+  apply_law(o, req);
+  apply_integration(o, req);
+  const std::array<Override, 5> overrides = {{{"impact.velocity", "--v0", o.v0.has_value()},
+                                              {"damping.zeta", "--zeta", o.zeta.has_value()},
+                                              {"damping.c", "--c", o.c.has_value()},
+                                              {"--param K", "--hc-k", o.hc_k.has_value()},
+                                              {"--param mu", "--hc-mu", o.hc_mu.has_value()}}};
+  try {
+    validate(req);
+  } catch (const InputError& e) {
+    for (const Override& ov : overrides) {
+      if (ov.given && e.field() == ov.field) {
+        const std::string message = std::string(e.what()).substr(e.field().size() + 2);
+        throw InputError(std::string(ov.flag), message);
+      }
+    }
+    throw;
+  }
+  return req;
+}
+
+std::optional<RequestOptions::Invalid> RequestOptions::invalid() const {
+  try {
+    to_request(*this);
+  } catch (const InputError& e) {
+    return Invalid{e.field(), std::string(e.what()).substr(e.field().size() + 2)};
+  }
+  return std::nullopt;
+}
+
+SimulationRun run_simulation(SimulationRequest request, std::vector<TrajectoryPoint>* trajectory) {
+  SimulationRun run;
+  run.request = std::move(request);
+  SimulationRequest& req = run.request;
+  const ValidatedRequest checked(req);  // refers to run.request, which outlives it
+  std::optional<IntegratorChoice> integrator_choice;
+  if (req.auto_integrator) {
+    integrator_choice = choose_integrator(req);
+    req.integrator = integrator_choice->integrator;
+  }
+  if (req.model == ModelKind::automatic) {
+    ModelRun m = simulate_model(checked, trajectory);
+    run.result = std::move(m.result);
+    run.choice = std::move(m.choice);
+    return run;
+  }
+  run.result = simulate(checked, trajectory);
+  if (integrator_choice) run.choice = integrated_choice(req, *integrator_choice);
+  return run;
+}
+
+}  // namespace ivv
