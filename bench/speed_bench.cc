@@ -12,10 +12,14 @@
 #include "solver/sweep.h"
 
 namespace ivv::bench {
+using verification::describe_machine;
+using verification::kErrorFloor;
+using verification::measure_peers;
+using verification::scene_label;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kStiffZeta = 100.0;
 // the stiff scene's reference: dop853 this tight (see the header)
 constexpr double kStiffReferenceTol = 1e-13;
 
@@ -24,26 +28,9 @@ struct Timing {
   int min_repeats;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// Median wall-clock of f() over repeats [us]; f runs at least min_repeats times and until
-// min_seconds have passed.
 template <class F>
 double median_us(F&& f, const Timing& timing) {
-  using Clock = std::chrono::steady_clock;
-  std::vector<double> us;
-  const auto start = Clock::now();
-  do {
-    const auto t0 = Clock::now();
-    f();
-    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
-  } while (static_cast<int>(us.size()) < timing.min_repeats ||
-           std::chrono::duration<double>(Clock::now() - start).count() < timing.min_seconds);
-  return median(us);
+  return verification::median_microseconds(f, timing.min_seconds, timing.min_repeats);
 }
 
 double rel(double x, double ref) {
@@ -59,10 +46,10 @@ Scene paper_at(double v0, double zeta) {
   return s;
 }
 
-BenchPoint measure(const SimulationRequest& req, const std::string& scene,
+SpeedPoint measure(const SimulationRequest& req, const std::string& scene,
                    const std::string& reference_name, const ImpactResult& ref, double setting,
                    const Timing& timing) {
-  BenchPoint pt;
+  SpeedPoint pt;
   pt.integrator = std::string(to_string(req.integrator));
   pt.law = std::string(to_string(req.law));
   pt.scene = scene;
@@ -85,10 +72,10 @@ BenchPoint measure(const SimulationRequest& req, const std::string& scene,
   return pt;
 }
 
-double best_us(const std::vector<BenchPoint>& pts, const std::string& scene, const std::string& law,
+double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, const std::string& law,
                double level, bool use_F, std::string* who = nullptr) {
   double best = kNaN;
-  for (const BenchPoint& p : pts) {
+  for (const SpeedPoint& p : pts) {
     if (!p.ok || p.scene != scene || p.law != law) continue;
     const double err = use_F ? std::max(p.err_e, p.err_F) : p.err_e;
     if (!(err <= level)) continue;
@@ -111,65 +98,6 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
 }
 
 }  // namespace
-
-std::string scene_label(double v0, double zeta) {
-  std::ostringstream os;
-  os << (zeta >= kStiffZeta ? "stiff" : "paper") << " v0=" << v0 << " zeta=" << zeta;
-  return os.str();
-}
-
-std::vector<BenchPoint> measure_peers(const std::vector<double>& tols, const ImpactResult& ref,
-                                      double min_seconds, int min_repeats) {
-  const Timing timing{min_seconds, min_repeats};
-  const Scene scene = paper_at(1.0, 0.1);
-  std::vector<BenchPoint> out;
-  for (Peer peer : kPeers) {
-    for (double tol : tols) {
-      BenchPoint pt;
-      pt.integrator = to_string(peer);
-      pt.law = "elastoplastic";
-      pt.scene = scene_label(1.0, 0.1);
-      pt.reference = "mp50";
-      pt.rtol = tol;
-      PeerResult r = run_peer(peer, scene, tol);
-      pt.rhs_evals = r.rhs_evaluations;
-      pt.ok = r.ok;
-      pt.reason = r.reason;
-      if (r.ok) {
-        pt.err_e = rel(r.e, ref.e);
-        pt.err_F = rel(r.F_max, ref.F_max);
-        pt.err_t = rel(r.t_contact, ref.t_contact);
-        pt.us_per_impact = median_us([&] { r = run_peer(peer, scene, tol); }, timing);
-      } else {
-        pt.err_e = pt.err_F = pt.err_t = pt.us_per_impact = kNaN;
-      }
-      out.push_back(pt);
-    }
-  }
-  return out;
-}
-
-std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
-                                  const std::vector<BenchPoint>& peers) {
-  const std::string scene = scene_label(1.0, 0.1);
-  std::vector<RatioRow> rows;
-  for (double level : {1e-6, 1e-8, 1e-10, 1e-12}) {
-    RatioRow row;
-    row.level = level;
-    row.ivv_us = best_us(points, scene, "elastoplastic", level, false, &row.ivv_integrator);
-    for (Peer peer : kPeers) {
-      double best = kNaN;
-      for (const BenchPoint& p : peers)
-        if (p.ok && p.integrator == to_string(peer) && p.err_e <= level &&
-            (std::isnan(best) || p.us_per_impact < best))
-          best = p.us_per_impact;
-      row.peer_us.push_back(best);
-      row.peer_ratio.push_back(best / row.ivv_us);
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 BenchReport run_bench(const BenchOptions& options,
                       const std::function<void(const std::string&)>& progress) {
@@ -221,11 +149,11 @@ BenchReport run_bench(const BenchOptions& options,
     }
   }
   {
-    const std::string label = scene_label(1.0, kStiffZeta);
+    const std::string label = scene_label(1.0, verification::kStiffSceneZeta);
     // the linearized law is undefined there (z_m far below 2.25 z_y with so stiff a dashpot)
     for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
       SimulationRequest base;
-      base.scene = paper_at(1.0, kStiffZeta);
+      base.scene = paper_at(1.0, verification::kStiffSceneZeta);
       base.law = law;
       SimulationRequest rq = base;
       rq.integrator = IntegratorKind::dop853;
@@ -275,8 +203,8 @@ BenchReport run_bench(const BenchOptions& options,
                                  "oracles::solve_linear_model on the paper scene, median of "
                                  "batches of 1000 calls"));
   }
-  const double ts =
-      best_us(rep.points, scene_label(1.0, kStiffZeta), "elastoplastic", 1e-6, true, &whos);
+  const double ts = best_us(rep.points, scene_label(1.0, verification::kStiffSceneZeta),
+                            "elastoplastic", 1e-6, true, &whos);
   rep.targets.push_back(target("zeta = 100 within 1e-6", 100.0, "us", ts,
                                "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
                                    "), elastoplastic, against dop853 at 1e-13"));
@@ -341,7 +269,7 @@ namespace {
 nlohmann::json num(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
-nlohmann::json point_json(const BenchPoint& p) {
+nlohmann::json point_json(const SpeedPoint& p) {
   nlohmann::json j = {{"integrator", p.integrator}, {"law", p.law},
                       {"scene", p.scene},           {"rtol", p.rtol},
                       {"err_e", num(p.err_e)},      {"err_F", num(p.err_F)},

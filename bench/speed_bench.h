@@ -26,20 +26,18 @@
 #include <string>
 #include <vector>
 
-#include "bench/peers.h"
-#include "bench/work_precision.h"
+#include "verification/peers.h"
+#include "verification/work_precision.h"
 
 namespace ivv::bench {
 
-struct BenchPoint {
-  std::string integrator, law, scene, reference;
-  double rtol = 0.0;  // rtol = atol; rk4: dt in tau
-  double err_e = 0.0, err_F = 0.0, err_t = 0.0;
-  double us_per_impact = 0.0;  // median [us]
-  long rhs_evals = 0;
-  bool ok = true;
-  std::string reason;
-};
+// The measurements are the verification layer's (the report draws the same ones); bench only
+// runs them over its grid, times them and states the targets.
+using verification::kPeers;
+using verification::MachineInfo;
+using verification::Peer;
+using verification::RatioRow;
+using verification::SpeedPoint;
 
 struct BenchTarget {
   std::string name;    // what the target says
@@ -57,32 +55,11 @@ struct BenchOptions {
 
 struct BenchReport {
   MachineInfo machine;
-  std::vector<BenchPoint> points;
-  std::vector<BenchPoint> peers;  // integrator = the peer's name, law elastoplastic
+  std::vector<SpeedPoint> points;
+  std::vector<SpeedPoint> peers;  // integrator = the peer's name, law elastoplastic
   std::vector<BenchTarget> targets;
   double seconds = 0.0;  // wall clock of the whole run
 };
-
-// One row per error level of the ratio table: the fastest time reaching err_e <= level on the
-// paper scene (v0 = 1 m/s, zeta = 0.1, elastoplastic) for ivv (any integrator) and each peer.
-struct RatioRow {
-  double level = 0.0;
-  double ivv_us = 0.0;  // NaN when no point reaches the level
-  std::string ivv_integrator;
-  std::vector<double> peer_us;     // per kPeers entry, NaN when not reached
-  std::vector<double> peer_ratio;  // peer_us / ivv_us
-};
-std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
-                                  const std::vector<BenchPoint>& peers);
-
-// The paper scene's label in points ("paper v0=1 zeta=0.1").
-std::string scene_label(double v0, double zeta);
-
-// Peers on the paper scene (v0 = 1 m/s, zeta = 0.1) over `tols`, against `reference` (the mp50
-// run of the elastoplastic law on that scene).
-std::vector<BenchPoint> measure_peers(const std::vector<double>& tols,
-                                      const ImpactResult& reference, double min_seconds,
-                                      int min_repeats);
 
 // Runs everything; `progress` (may be empty) gets one line per stage.
 BenchReport run_bench(const BenchOptions& options,

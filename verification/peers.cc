@@ -1,4 +1,4 @@
-#include "bench/peers.h"
+#include "verification/peers.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
@@ -6,8 +6,12 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
-namespace ivv::bench {
+#include "verification/work_precision.h"
+
+namespace ivv::verification {
 namespace {
 
 using State = std::array<double, 3>;      // a, w, z (normalised)
@@ -191,4 +195,96 @@ PeerResult run_peer(Peer peer, const Scene& scene, double tol) {
   return peer == Peer::gsl_rk8pd_driver ? gsl_peer(scene, tol) : odeint_peer(scene, tol);
 }
 
-}  // namespace ivv::bench
+// ---- measuring the peers against ivv -------------------------------------------------------
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double rel(double x, double ref) {
+  const double d = std::abs(x - ref);
+  const double r = ref == 0.0 ? d : d / std::abs(ref);
+  return r == 0.0 ? kErrorFloor : r;
+}
+
+}  // namespace
+
+std::string scene_label(double v0, double zeta) {
+  std::ostringstream os;
+  os << (zeta >= kStiffSceneZeta ? "stiff" : "paper") << " v0=" << v0 << " zeta=" << zeta;
+  return os.str();
+}
+
+std::vector<SpeedPoint> measure_peers(const std::vector<double>& tols, const ImpactResult& ref,
+                                      double min_seconds, int min_repeats) {
+  Scene scene = paper_scene();
+  scene.velocity = 1.0;
+  scene.damping = Damping::ratio(0.1);
+  std::vector<SpeedPoint> out;
+  for (Peer peer : kPeers) {
+    for (double tol : tols) {
+      SpeedPoint pt;
+      pt.integrator = to_string(peer);
+      pt.law = "elastoplastic";
+      pt.scene = scene_label(1.0, 0.1);
+      pt.reference = "mp50";
+      pt.rtol = tol;
+      PeerResult r = run_peer(peer, scene, tol);
+      pt.rhs_evals = r.rhs_evaluations;
+      pt.ok = r.ok;
+      pt.reason = r.reason;
+      if (r.ok) {
+        pt.err_e = rel(r.e, ref.e);
+        pt.err_F = rel(r.F_max, ref.F_max);
+        pt.err_t = rel(r.t_contact, ref.t_contact);
+        pt.us_per_impact =
+            median_microseconds([&] { r = run_peer(peer, scene, tol); }, min_seconds, min_repeats);
+      } else {
+        pt.err_e = pt.err_F = pt.err_t = pt.us_per_impact = kNaN;
+      }
+      out.push_back(pt);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, double level,
+               std::string* who) {
+  double best = kNaN;
+  for (const SpeedPoint& p : pts) {
+    if (!p.ok || p.scene != scene || p.law != "elastoplastic" || !(p.err_e <= level)) continue;
+    if (std::isnan(best) || p.us_per_impact < best) {
+      best = p.us_per_impact;
+      *who = p.integrator;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<RatioRow> ratio_table(const std::vector<SpeedPoint>& points,
+                                  const std::vector<SpeedPoint>& peers) {
+  const std::string scene = scene_label(1.0, 0.1);
+  std::vector<RatioRow> rows;
+  for (double level : {1e-6, 1e-8, 1e-10, 1e-12}) {
+    RatioRow row;
+    row.level = level;
+    row.ivv_us = best_us(points, scene, level, &row.ivv_integrator);
+    for (Peer peer : kPeers) {
+      double best = kNaN;
+      for (const SpeedPoint& p : peers)
+        if (p.ok && p.integrator == to_string(peer) && p.err_e <= level &&
+            (std::isnan(best) || p.us_per_impact < best))
+          best = p.us_per_impact;
+      row.peer_us.push_back(best);
+      row.peer_ratio.push_back(best / row.ivv_us);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace ivv::verification

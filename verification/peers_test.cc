@@ -1,13 +1,15 @@
-// The bench's pieces that do not time anything: the peers solve the same problem as ivv (their
-// answers agree with the 50-digit reference within what their tolerance allows), and the ratio
-// table picks the fastest run within each error level.
-#include "bench/speed_bench.h"
+// The peer measurement's pieces that do not time anything: the peers solve the same problem as ivv
+// (their answers agree with the 50-digit reference within what their tolerance allows), and the
+// ratio table picks the fastest run within each error level.
+#include "verification/peers.h"
+
+#include "solver/simulate.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace ivv::bench {
+namespace ivv::verification {
 namespace {
 
 ImpactResult paper_reference() {
@@ -41,8 +43,8 @@ TEST(Peers, SolveTheSameImpactAsIvv) {
   }
 }
 
-BenchPoint point(std::string who, double err, double us) {
-  BenchPoint p;
+SpeedPoint point(std::string who, double err, double us) {
+  SpeedPoint p;
   p.integrator = std::move(who);
   p.law = "elastoplastic";
   p.scene = scene_label(1.0, 0.1);
@@ -52,9 +54,9 @@ BenchPoint point(std::string who, double err, double us) {
 }
 
 TEST(RatioTable, FastestRunWithinEachLevel) {
-  const std::vector<BenchPoint> ivv = {point("a", 1e-7, 2.0), point("b", 1e-9, 5.0),
+  const std::vector<SpeedPoint> ivv = {point("a", 1e-7, 2.0), point("b", 1e-9, 5.0),
                                        point("c", 1e-9, 4.0), point("d", 1e-13, 20.0)};
-  const std::vector<BenchPoint> peers = {point(to_string(kPeers[0]), 1e-9, 40.0),
+  const std::vector<SpeedPoint> peers = {point(to_string(kPeers[0]), 1e-9, 40.0),
                                          point(to_string(kPeers[1]), 1e-7, 3.0)};
   const auto rows = ratio_table(ivv, peers);
   ASSERT_EQ(rows.size(), 4u);  // 1e-6, 1e-8, 1e-10, 1e-12
@@ -68,13 +70,13 @@ TEST(RatioTable, FastestRunWithinEachLevel) {
 }
 
 TEST(RatioTable, IgnoresFailedPointsAndOtherScenes) {
-  BenchPoint failed = point("x", 1e-14, 0.1);
+  SpeedPoint failed = point("x", 1e-14, 0.1);
   failed.ok = false;
-  BenchPoint other = point("y", 1e-14, 0.1);
+  SpeedPoint other = point("y", 1e-14, 0.1);
   other.scene = scene_label(5.0, 0.1);
   const auto rows = ratio_table({failed, other, point("z", 1e-14, 9.0)}, {});
   EXPECT_EQ(rows[0].ivv_integrator, "z");
 }
 
 }  // namespace
-}  // namespace ivv::bench
+}  // namespace ivv::verification

@@ -23,9 +23,10 @@
 #include <string>
 #include <vector>
 
+#include "solver/result.h"
 #include "solver/scene.h"
 
-namespace ivv::bench {
+namespace ivv::verification {
 
 struct PeerResult {
   bool ok = false;
@@ -43,4 +44,42 @@ inline constexpr Peer kPeers[] = {Peer::gsl_rk8pd_driver, Peer::odeint_dopri5_de
 // One impact of `scene` (which must have a dashpot, and separate) at rtol = atol = tol.
 PeerResult run_peer(Peer peer, const Scene& scene, double tol);
 
-}  // namespace ivv::bench
+// ---- measuring the peers against ivv (the report's speed section and `ivv bench`) ----------
+
+// One point of a speed measurement: an integrator of ivv or a peer at one setting, its errors
+// against a reference and its median time.
+struct SpeedPoint {
+  std::string integrator, law, scene, reference;
+  double rtol = 0.0;  // rtol = atol; rk4: dt in tau
+  double err_e = 0.0, err_F = 0.0, err_t = 0.0;
+  double us_per_impact = 0.0;  // median [us]
+  long rhs_evals = 0;
+  bool ok = true;
+  std::string reason;
+};
+
+// One row per error level of the ratio table: the fastest time reaching err_e <= level on the
+// paper scene (v0 = 1 m/s, zeta = 0.1, elastoplastic) for ivv (any integrator) and each peer.
+struct RatioRow {
+  double level = 0.0;
+  double ivv_us = 0.0;  // NaN when no point reaches the level
+  std::string ivv_integrator;
+  std::vector<double> peer_us;     // per kPeers entry, NaN when not reached
+  std::vector<double> peer_ratio;  // peer_us / ivv_us
+};
+std::vector<RatioRow> ratio_table(const std::vector<SpeedPoint>& points,
+                                  const std::vector<SpeedPoint>& peers);
+
+// The label of the paper scene at (v0, zeta) in SpeedPoint::scene ("paper v0=1 zeta=0.1";
+// "stiff v0=1 zeta=100" from zeta = kStiffSceneZeta on: `ivv bench`'s stiff scene).
+inline constexpr double kStiffSceneZeta = 100.0;
+std::string scene_label(double v0, double zeta);
+
+// Peers on the paper scene (v0 = 1 m/s, zeta = 0.1) over `tols`, against `reference` (the mp50
+// run of the elastoplastic law on that scene); each point timed by median_microseconds
+// (work_precision.h) with min_seconds and min_repeats.
+std::vector<SpeedPoint> measure_peers(const std::vector<double>& tols,
+                                      const ImpactResult& reference, double min_seconds,
+                                      int min_repeats);
+
+}  // namespace ivv::verification
