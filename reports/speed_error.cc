@@ -144,6 +144,19 @@ SpeedSection speed_section(const SectionOptions& options) {
   return out;
 }
 
+namespace {
+// How each peer is set up, so that a reader can judge the comparison fair
+// (verification/peers.h says it at length).
+std::string peer_setups_html() {
+  std::string out =
+      "<p>How each peer is set up (the same problem, tolerance rtol = atol):</p>\n<ul>\n";
+  for (verification::Peer p : verification::kPeers)
+    out += "<li><b>" + escape(verification::to_string(p)) +
+           "</b>: " + escape(verification::setup(p)) + "</li>\n";
+  return out + "</ul>\n";
+}
+}  // namespace
+
 std::string ratio_table_html(const SpeedSection& s) {
   std::vector<std::string> head = {"error of e at most", "ivv best [µs]", "ivv integrator"};
   for (verification::Peer p : verification::kPeers) {
@@ -164,7 +177,7 @@ std::string ratio_table_html(const SpeedSection& s) {
          "fastest run of each peer (same scene, same mp50 reference, same machine and run); "
          "ratio = peer time / ivv time (above 1: ivv is faster). NaN: no run reached the "
          "level.</p>\n" +
-         table(head, rows, Source::timing());
+         table(head, rows, Source::timing()) + peer_setups_html();
 }
 
 }  // namespace ivv::reports

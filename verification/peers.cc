@@ -8,58 +8,18 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
+#include "verification/peer_problem.h"
 #include "verification/work_precision.h"
 
 namespace ivv::verification {
-namespace {
-
-using State = std::array<double, 3>;      // a, w, z (normalised)
-constexpr double kOutputInterval = 0.05;  // gsl peer: output grid in tau
-constexpr double kTauLimit = 1e3;         // no paper-scene contact lasts this long
-
-// The law and the equations, as a user would write them (paper eqs 8-10, normalised).
-struct Problem {
-  double L, Fs, K_h, z_y, K_y, two_zeta;
-  bool unloading = false;
-  double z_m = 0.0;  // [m]
-  mutable long evals = 0;
-
-  double force(double zbar) const {
-    const double z = zbar * L;
-    double F;
-    if (!unloading) {
-      F = z <= z_y ? K_h * z * std::sqrt(z) : K_y * (z - z_y) + K_h * z_y * std::sqrt(z_y);
-    } else if (z_m > z_y) {
-      F = K_h * (z * std::sqrt(std::max(z, 0.0)) - z_m * std::sqrt(z_m) + z_y * std::sqrt(z_y)) +
-          K_y * (z_m - z_y);
-    } else {
-      F = K_h * z * std::sqrt(std::max(z, 0.0));
-    }
-    return F / Fs;
-  }
-  void operator()(const State& x, State& d, double) const {
-    ++evals;
-    const double F = force(x[2]);
-    d[0] = x[1];
-    d[1] = -F;
-    d[2] = x[1] - two_zeta * F;
-  }
-  // event of the current phase: z' on loading (falls through 0), F on unloading
-  double event(const State& x) const {
-    const double F = force(x[2]);
-    return unloading ? F : x[1] - two_zeta * F;
-  }
-};
+namespace peer_detail {
 
 Problem make_problem(const Scene& scene) {
   const DerivedParameters p = derive(scene);
   const Scales k = scales(scene, p, ScaleBasis::yield);  // the elastoplastic law's own
   return {k.length, k.force, p.K_h, p.z_y, p.K_y, 2.0 * p.zeta};
-}
-
-bool converged(double lo, double hi) {
-  return hi - lo <= 1e-13 * (1 + std::abs(hi));
 }
 
 PeerResult finish(const Problem& pb, const Scene& scene, const State& x, double tau, double F_max) {
@@ -70,6 +30,17 @@ PeerResult finish(const Problem& pb, const Scene& scene, const State& x, double 
   r.t_contact = tau / derive(scene).omega0;
   r.rhs_evaluations = pb.evals;
   return r;
+}
+
+}  // namespace peer_detail
+
+namespace {
+using namespace peer_detail;
+
+constexpr double kOutputInterval = 0.05;  // gsl peer: output grid in tau
+
+bool converged(double lo, double hi) {
+  return hi - lo <= 1e-13 * (1 + std::abs(hi));
 }
 
 int gsl_rhs(double, const double y[], double dydt[], void* params) {
@@ -130,11 +101,7 @@ PeerResult gsl_peer(const Scene& scene, double tol) {
       tau = t;
       g_prev = g;
     }
-    if (phase == 0) {
-      F_max = pb.force(x[2]);
-      pb.z_m = x[2] * pb.L;
-      pb.unloading = true;
-    }
+    if (phase == 0) F_max = pb.switch_to_unloading(x);
   }
   gsl_odeiv2_driver_free(d);
   return finish(pb, scene, x, tau, F_max);
@@ -175,11 +142,7 @@ PeerResult odeint_peer(const Scene& scene, double tol) {
       }
       g_prev = g;
     }
-    if (phase == 0) {
-      F_max = pb.force(x[2]);
-      pb.z_m = x[2] * pb.L;
-      pb.unloading = true;
-    }
+    if (phase == 0) F_max = pb.switch_to_unloading(x);
   }
   return finish(pb, scene, x, tau, F_max);
 }
@@ -187,12 +150,66 @@ PeerResult odeint_peer(const Scene& scene, double tol) {
 }  // namespace
 
 std::string to_string(Peer p) {
-  return p == Peer::gsl_rk8pd_driver ? "gsl-rk8pd-driver" : "odeint-dopri5-dense";
+  switch (p) {
+    case Peer::gsl_rk8pd_driver:
+      return "gsl-rk8pd-driver";
+    case Peer::odeint_dopri5_dense:
+      return "odeint-dopri5-dense";
+    case Peer::cvode_adams:
+      return "sundials-cvode-adams";
+    case Peer::cvode_bdf:
+      return "sundials-cvode-bdf";
+    case Peer::arkode_erk:
+      return "sundials-arkode-erk";
+  }
+  throw std::logic_error("to_string: not a Peer");
+}
+
+std::string setup(Peer p) {
+  const std::string after_step =
+      "; events noticed after a step, bisected to 1e-13 in normalised time";
+  const std::string own_roots =
+      "; events by its own root finding (direction -1), re-initialised at maximum compression "
+      "(the law's slope jumps); memory made once per thread, re-initialised per impact";
+  switch (p) {
+    case Peer::gsl_rk8pd_driver:
+      return "GSL odeiv2 rk8pd behind gsl_odeiv2_driver_apply, outputs every 0.05 in tau" +
+             after_step + " by re-integrating from the last output";
+    case Peer::odeint_dopri5_dense:
+      return "Boost.Odeint dense-output dopri5 (make_dense_output, do_step)" + after_step +
+             " on the dense output";
+    case Peer::cvode_adams:
+      return "SUNDIALS 6.4 CVODE, Adams (orders 1-12) with fixed-point iteration (the guide's "
+             "non-stiff choice)" +
+             own_roots;
+    case Peer::cvode_bdf:
+      return "SUNDIALS 6.4 CVODE, BDF (orders 1-5), Newton with a dense linear solver and the "
+             "analytic Jacobian (the guide's stiff choice)" +
+             own_roots;
+    case Peer::arkode_erk:
+      return "SUNDIALS 6.4 ARKODE ERKStep, Dormand-Prince 7-4-5 (faster here than its "
+             "Fehlberg 13-7-8 and Verner 8-5-6), Hermite interpolant of degree 4 (the most "
+             "for order 5)" +
+             own_roots;
+  }
+  throw std::logic_error("setup: not a Peer");
 }
 
 PeerResult run_peer(Peer peer, const Scene& scene, double tol) {
-  gsl_set_error_handler_off();
-  return peer == Peer::gsl_rk8pd_driver ? gsl_peer(scene, tol) : odeint_peer(scene, tol);
+  switch (peer) {
+    case Peer::gsl_rk8pd_driver:
+      gsl_set_error_handler_off();
+      return gsl_peer(scene, tol);
+    case Peer::odeint_dopri5_dense:
+      return odeint_peer(scene, tol);
+    case Peer::cvode_adams:
+      return cvode_peer(scene, tol, false);
+    case Peer::cvode_bdf:
+      return cvode_peer(scene, tol, true);
+    case Peer::arkode_erk:
+      return arkode_erk_peer(scene, tol);
+  }
+  throw std::logic_error("run_peer: not a Peer");
 }
 
 // ---- measuring the peers against ivv -------------------------------------------------------

@@ -23,8 +23,10 @@ ImpactResult paper_reference() {
 }
 
 // At rtol = atol = 1e-10 an adaptive peer's global error is at most ~N rtol with N <= 1000
-// steps (the reasoning of verification/tolerances.h), and its bisection ends at 1e-13 in tau:
-// 1e-7 on e, F_max and t_f.
+// steps (the reasoning of verification/tolerances.h), and its events are placed to 1e-13 in tau
+// (bisection) or by SUNDIALS' root finding on an interpolant of the step's own order (CVODE's
+// Nordsieck history; ARKODE's Hermite polynomial of degree 4, whose error at this tolerance is
+// ~3e-9 on e, measured): 1e-7 on e, F_max and t_f.
 constexpr double kPeerTolerance = 1e-7;
 
 TEST(Peers, SolveTheSameImpactAsIvv) {
@@ -41,6 +43,33 @@ TEST(Peers, SolveTheSameImpactAsIvv) {
     EXPECT_NEAR(r.t_contact, ref.t_contact, kPeerTolerance * ref.t_contact) << to_string(p);
     EXPECT_GT(r.rhs_evaluations, 0);
   }
+}
+
+// The SUNDIALS peers keep their solver memory from one impact to the next (re-initialised, not
+// re-created): a run leaves nothing behind that changes the next one.
+TEST(Peers, ARunLeavesNothingBehind) {
+  Scene s = paper_scene();
+  s.velocity = 1.0;
+  s.damping = Damping::ratio(0.1);
+  Scene other = s;
+  other.velocity = 5.0;
+  for (Peer p : kPeers) {
+    const PeerResult first = run_peer(p, s, 1e-6);
+    run_peer(p, other, 1e-11);
+    const PeerResult again = run_peer(p, s, 1e-6);
+    ASSERT_TRUE(first.ok && again.ok) << to_string(p) << ": " << first.reason << again.reason;
+    EXPECT_EQ(first.e, again.e) << to_string(p);
+    EXPECT_EQ(first.F_max, again.F_max) << to_string(p);
+    EXPECT_EQ(first.rhs_evaluations, again.rhs_evaluations) << to_string(p);
+  }
+}
+
+TEST(Peers, NamesAreDistinct) {
+  for (Peer a : kPeers)
+    for (Peer b : kPeers)
+      if (a != b) {
+        EXPECT_NE(to_string(a), to_string(b));
+      }
 }
 
 SpeedPoint point(std::string who, double err, double us) {
