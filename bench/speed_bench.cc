@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include <unistd.h>  // getpid: the map's scratch CSV
 
 #include "oracles/linear_model.h"
 #include "solver/sweep.h"
@@ -88,13 +91,153 @@ double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, con
 }
 
 BenchTarget target(std::string name, double bound, std::string unit, double measured,
-                   std::string how) {
-  BenchTarget t{std::move(name), bound, std::move(unit), measured, false, kNaN, std::move(how)};
+                   std::string how, std::string issue = "8") {
+  BenchTarget t{std::move(issue), std::move(name), bound, std::move(unit),
+                measured,         false,           kNaN,  std::move(how)};
   if (!std::isnan(measured)) {
     t.ratio = measured / bound;
     t.met = measured <= bound;
   }
   return t;
+}
+
+// ---- issue 20's targets -------------------------------------------------------------------
+
+// ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),
+// as ivv time / peer time: the target "ivv >= N x faster" is a bound 1/N on it.
+void add_peer_ratio_targets(BenchReport& rep) {
+  const auto rows = verification::ratio_table(rep.points, rep.peers);
+  const auto row =
+      std::find_if(rows.begin(), rows.end(), [](const RatioRow& r) { return r.level == 1e-8; });
+  if (row == rows.end()) return;
+  auto peer_us = [&](Peer p) {
+    for (std::size_t i = 0; i < std::size(kPeers); ++i)
+      if (kPeers[i] == p) return row->peer_us[i];
+    return kNaN;
+  };
+  const double odeint = peer_us(Peer::odeint_dopri5_dense);
+  const double adams = peer_us(Peer::cvode_adams), bdf = peer_us(Peer::cvode_bdf);
+  const bool adams_faster = !(bdf < adams);  // NaN (level not reached) loses
+  const double cvode = adams_faster ? adams : bdf;
+  const std::string at = " at |de|/e <= 1e-8 on the paper scene";
+  rep.targets.push_back(
+      target("ivv >= 10x faster than the odeint idiom" + at, 0.1, "ratio", row->ivv_us / odeint,
+             "ivv's fastest run (" + row->ivv_integrator +
+                 ") / odeint-dopri5-dense's fastest, both "
+                 "reaching the level, measured in this run (peers: verification/peers.h)",
+             "20"));
+  rep.targets.push_back(
+      target("ivv >= 25x faster than CVODE" + at, 0.04, "ratio", row->ivv_us / cvode,
+             "ivv's fastest run (" + row->ivv_integrator +
+                 ") / the faster of CVODE Adams and BDF (" + (adams_faster ? "Adams" : "BDF") +
+                 ") reaching the level, each with its own root "
+                 "finding, measured in this run",
+             "20"));
+}
+
+// The median of three runs of the map through SweepSink (journal, partial CSV, the CSV written
+// atomically: what `ivv sweep --out` does, without the sidecar) [s]; *failed: failed points.
+double time_map_with_csv(const SweepRequest& sweep, int threads, int* failed) {
+  SweepRequest r = sweep;
+  r.threads = threads;
+  const std::filesystem::path csv = std::filesystem::temp_directory_path() /
+                                    ("ivv-bench-map-" + std::to_string(::getpid()) + ".csv");
+  std::vector<double> runs;
+  for (int k = 0; k < 3; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    SweepOutputOptions out;
+    out.csv = csv;
+    SweepSink sink(r, out);
+    run_sweep_points(r, sink, {});
+    sink.finish([&](const SweepCounts& c) { *failed = static_cast<int>(c.failed); });
+    runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::filesystem::remove(csv);
+  std::sort(runs.begin(), runs.end());
+  return runs[1];
+}
+
+// Issue 20's map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
+// --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
+// scaled to 90000 points.
+void add_map_targets(BenchReport& rep, bool quick) {
+  const int nv = quick ? 60 : 300, nz = quick ? 30 : 300;
+  SweepRequest sweep;
+  sweep.base.scene = paper_scene();
+  sweep.base.law = LawKind::elastoplastic;
+  sweep.base.model = ModelKind::automatic;
+  sweep.base.auto_integrator = true;
+  sweep.base.integrator = IntegratorKind::dop853;
+  sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
+  sweep.velocities = log_grid(0.1, 10.0, nv);
+  sweep.zetas = linear_grid(0.0, 1.0, nz);
+  const double scale = (300.0 * 300.0) / (nv * nz);
+  int failed_one = 0, failed_two = 0;
+  const double one = time_map_with_csv(sweep, 1, &failed_one) * scale;
+  const double two = time_map_with_csv(sweep, 2, &failed_two) * scale;
+  const std::string grid = quick ? "60 x 30 subgrid scaled to 90000 impacts; " : "";
+  rep.targets.push_back(
+      target("300 x 300 COR map with its CSV at rtol 1e-8, --model auto, one thread", 0.4, "s", one,
+             grid + "run_sweep_points into a SweepSink (journal, CSV), median of 3; " +
+                 std::to_string(failed_one) + " failed points (a failed point counts as a miss)",
+             "20"));
+  if (failed_one > 0) rep.targets.back().met = false;
+  rep.targets.push_back(target(
+      "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
+      grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
+      "20"));
+}
+
+// --integrator auto against the fastest fixed integrator at every point of a grid that holds
+// the heavily damped scenes of issue 20 (zeta 8 and 16), elastoplastic, --model full (the
+// choice is of an integrator), rtol = atol = 1e-8. The fixed candidates: every production
+// integrator with error control (rk4 has none). A fixed run that fails is no candidate.
+void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timing) {
+  const std::vector<double> v0s =
+      quick ? std::vector<double>{1.0, 5.0} : std::vector<double>{0.3, 1.0, 5.0};
+  const std::vector<double> zetas = quick ? std::vector<double>{0.1, 8.0, 16.0}
+                                          : std::vector<double>{0.0, 0.1, 1.0, 4.0, 8.0, 16.0};
+  AutoPoint worst;
+  bool worst_failed = false;  // auto failed at a point: that point is the miss
+  for (double v0 : v0s)
+    for (double zeta : zetas) {
+      SimulationRequest req;
+      req.scene = paper_at(v0, zeta);
+      req.options.rtol = req.options.atol = 1e-8;
+      AutoPoint pt{v0, zeta, "", kNaN, "", kNaN, kNaN};
+      SimulationRequest a = req;
+      a.auto_integrator = true;
+      ImpactResult r = simulate(a);
+      pt.auto_integrator = std::string(r.integrator);
+      if (r.ok()) pt.auto_us = median_us([&] { r = simulate(a); }, timing);
+      for (IntegratorKind k : production_integrators()) {
+        if (traits(k).fixed_step) continue;
+        req.integrator = k;
+        ImpactResult f = simulate(req);
+        if (!f.ok()) continue;
+        const double us = median_us([&] { f = simulate(req); }, timing);
+        if (!(us >= pt.best_us)) {
+          pt.best_us = us;
+          pt.best_integrator = std::string(to_string(k));
+        }
+      }
+      pt.ratio = pt.auto_us / pt.best_us;  // NaN when auto failed: a miss
+      rep.auto_grid.push_back(pt);
+      const bool failed = std::isnan(pt.ratio);
+      if (!worst_failed && (failed || pt.ratio > worst.ratio)) {
+        worst = pt;
+        worst_failed = failed;
+      }
+    }
+  std::ostringstream how;
+  how << "max over " << rep.auto_grid.size() << " points (v0 x zeta, elastoplastic, --model "
+      << "full, rtol 1e-8) of auto's time / the fastest fixed integrator's; worst at v0 = "
+      << worst.v0 << " m/s, zeta = " << worst.zeta << ": auto chose " << worst.auto_integrator
+      << ", fastest " << worst.best_integrator << " (auto_grid in the JSON)";
+  if (worst_failed) how << "; auto's run or every fixed run failed there";
+  rep.targets.push_back(target(
+      "--integrator auto within 1.25x of the best fixed integrator", 1.25, "ratio",
+      worst_failed ? std::numeric_limits<double>::infinity() : worst.ratio, how.str(), "20"));
 }
 
 }  // namespace
@@ -173,7 +316,7 @@ BenchReport run_bench(const BenchOptions& options,
       }
     }
   }
-  say("bench: peers (gsl-rk8pd-driver, odeint-dopri5-dense) on the paper scene");
+  say("bench: peers (GSL, odeint, SUNDIALS CVODE and ARKODE) on the paper scene");
   rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
 
   say("bench: targets");
@@ -183,7 +326,8 @@ BenchReport run_bench(const BenchOptions& options,
   const double t12 = best_us(rep.points, paper, "elastoplastic", 1e-12, false, &who12);
   rep.targets.push_back(target(
       "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
-      "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1"));
+      "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
+      "8, 20"));
   rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
                                "fastest point with err_e <= 1e-12 (" + who12 + ")"));
   {
@@ -201,7 +345,8 @@ BenchReport run_bench(const BenchOptions& options,
                       kBatch;
     rep.targets.push_back(target("linearized closed form", 0.3, "us", sink != 0 ? us : kNaN,
                                  "oracles::solve_linear_model on the paper scene, median of "
-                                 "batches of 1000 calls"));
+                                 "batches of 1000 calls",
+                                 "8, 20"));
   }
   const double ts = best_us(rep.points, scene_label(1.0, verification::kStiffSceneZeta),
                             "elastoplastic", 1e-6, true, &whos);
@@ -261,6 +406,10 @@ BenchReport run_bench(const BenchOptions& options,
                                         "thread; the per-point error check is the case "
                                         "autochoice.model"));
   }
+  say("bench: issue 20's targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
+  add_peer_ratio_targets(rep);
+  add_map_targets(rep, options.quick);
+  add_auto_integrator_target(rep, options.quick, timing);
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   return rep;
 }
@@ -291,9 +440,21 @@ std::string to_json(const BenchReport& r) {
   for (const auto& p : r.points) j["points"].push_back(point_json(p));
   j["peers"] = nlohmann::json::array();
   for (const auto& p : r.peers) j["peers"].push_back(point_json(p));
+  j["peer_setups"] = nlohmann::json::object();
+  for (Peer p : kPeers) j["peer_setups"][verification::to_string(p)] = verification::setup(p);
+  j["auto_grid"] = nlohmann::json::array();
+  for (const auto& a : r.auto_grid)
+    j["auto_grid"].push_back({{"v0", a.v0},
+                              {"zeta", a.zeta},
+                              {"auto_integrator", a.auto_integrator},
+                              {"auto_us", num(a.auto_us)},
+                              {"best_integrator", a.best_integrator},
+                              {"best_us", num(a.best_us)},
+                              {"ratio", num(a.ratio)}});
   j["targets"] = nlohmann::json::array();
   for (const auto& t : r.targets)
-    j["targets"].push_back({{"target", t.name},
+    j["targets"].push_back({{"issue", t.issue},
+                            {"target", t.name},
                             {"bound", t.bound},
                             {"unit", t.unit},
                             {"measured", num(t.measured)},
@@ -331,14 +492,24 @@ std::string to_text(const BenchReport& r) {
       os << "   " << std::setw(8) << row.peer_us[i] << " (x" << row.peer_ratio[i] << ")";
     os << "\n";
   }
-  os << "\ntargets (issue 8, part 5):\n";
+  os << "\npeers (the same impact, rtol = atol = the tolerance):\n";
+  for (Peer p : kPeers) os << "  " << to_string(p) << ": " << verification::setup(p) << "\n";
+  if (!r.auto_grid.empty()) {
+    os << "\n--integrator auto against the fastest fixed integrator (elastoplastic, --model full, "
+          "rtol 1e-8):\n";
+    for (const auto& a : r.auto_grid)
+      os << "  v0 = " << std::setw(4) << a.v0 << " m/s, zeta = " << std::setw(4) << a.zeta
+         << ": auto (" << a.auto_integrator << ") " << std::setprecision(3) << a.auto_us
+         << " us, best (" << a.best_integrator << ") " << a.best_us << " us, x" << a.ratio << "\n";
+  }
+  os << "\ntargets (issue 8, part 5; issue 20):\n";
   for (const auto& t : r.targets) {
     os << "  "
        << (std::isnan(t.measured) ? "n/a "
            : t.met                ? "pass"
                                   : "MISS")
-       << "  " << t.name << ": target <= " << t.bound << " " << t.unit << ", measured "
-       << std::setprecision(3) << t.measured << " " << t.unit;
+       << "  [issue " << t.issue << "] " << t.name << ": target <= " << t.bound << " " << t.unit
+       << ", measured " << std::setprecision(3) << t.measured << " " << t.unit;
     if (!std::isnan(t.ratio)) os << " (x" << t.ratio << " of the target)";
     os << "\n        " << t.how << "\n";
   }

@@ -1,5 +1,5 @@
 // `ivv bench`: speed against error for every integrator and law, with the peers measured in
-// the same run and the targets of issue 8 printed beside the measured figures.
+// the same run and the targets of issues 8 and 20 printed beside the measured figures.
 //
 // Scenes: the paper scene (Table 1) at v0 in {0.1, 1, 5} m/s and zeta in {0, 0.1}, and a stiff
 // scene (v0 = 1 m/s, zeta = 100: the dashpot time scale 1/(2 zeta) in tau is 200 times shorter
@@ -18,6 +18,17 @@
 // rtol = atol = 1e-13, whose stability-limited steps keep it far below its tolerance (it agrees
 // with odeint-rosenbrock4 at 1e-13 to ~5e-11 in F_max): stated in the JSON as reference.
 // The stiff scene is a capture (e = 0): err_e is then the absolute error of e.
+//
+// Peers (verification/peers.h, every one set up as stated there and in the JSON's
+// peer_setups): GSL rk8pd behind its driver, odeint's dense dopri5, SUNDIALS CVODE Adams and
+// BDF and ARKODE ERK with their own root finding, on the paper scene at v0 = 1 m/s, zeta = 0.1.
+//
+// Issue 20's targets, measured in the same run: the paper scene at |de|/e <= 1e-8 (time, and
+// ivv's time over odeint's and over the faster CVODE's at that level); the 300 x 300 map (v0
+// 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto, --integrator auto) through
+// SweepSink with its journal and CSV, wall clock on one and two threads (--quick: 60 x 30,
+// scaled); --integrator auto against the fastest fixed integrator on every point of a grid with
+// the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
 //
 // Timings are never pass/fail; quote ratios measured in one run, with `machine`.
 #pragma once
@@ -40,6 +51,7 @@ using verification::RatioRow;
 using verification::SpeedPoint;
 
 struct BenchTarget {
+  std::string issue;   // the issue that set it ("8", "20", "8, 20")
   std::string name;    // what the target says
   double bound = 0.0;  // the target [us] (or [s] for the map)
   std::string unit;
@@ -53,10 +65,22 @@ struct BenchOptions {
   bool quick = false;
 };
 
+// One point of the --integrator auto grid (issue 20): auto's time against the fastest fixed
+// integrator's on the same request (elastoplastic, --model full, rtol = atol = 1e-8).
+struct AutoPoint {
+  double v0 = 0.0, zeta = 0.0;  // [m/s], [-]
+  std::string auto_integrator;  // what auto chose
+  double auto_us = 0.0;         // median [us]
+  std::string best_integrator;  // the fastest fixed integrator that succeeded
+  double best_us = 0.0;         // median [us]
+  double ratio = 0.0;           // auto_us / best_us
+};
+
 struct BenchReport {
   MachineInfo machine;
   std::vector<SpeedPoint> points;
   std::vector<SpeedPoint> peers;  // integrator = the peer's name, law elastoplastic
+  std::vector<AutoPoint> auto_grid;
   std::vector<BenchTarget> targets;
   double seconds = 0.0;  // wall clock of the whole run
 };
