@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 namespace {
@@ -111,8 +112,29 @@ TEST(Cli, BenchQuickJsonHasPointsPeersAndTargets) {
   for (const char* key : {"integrator", "law", "scene", "rtol", "err_e", "err_F", "err_t",
                           "us_per_impact", "rhs_evals"})
     EXPECT_TRUE(j["points"][0].contains(key)) << key;
-  EXPECT_EQ(j["peers"].size() % 2, 0u);  // two peers, same tolerances
+  // five peers (GSL, odeint, CVODE Adams and BDF, ARKODE ERK), each at the same tolerances,
+  // each with its setup stated
+  std::set<std::string> peers;
+  for (const auto& p : j["peers"]) peers.insert(p["integrator"].get<std::string>());
+  for (const char* name : {"gsl-rk8pd-driver", "odeint-dopri5-dense", "sundials-cvode-adams",
+                           "sundials-cvode-bdf", "sundials-arkode-erk"}) {
+    EXPECT_EQ(peers.count(name), 1u) << name;
+    EXPECT_TRUE(j["peer_setups"].contains(name)) << name;
+  }
+  EXPECT_EQ(peers.size(), 5u);
+  EXPECT_EQ(j["peers"].size() % 5, 0u);
   for (const auto& t : j["targets"]) EXPECT_TRUE(t.contains("status"));
+  // issue 20's targets, each with its measured value (a number, or null only when not measured)
+  int issue20 = 0;
+  for (const auto& t : j["targets"]) {
+    if (t["issue"].get<std::string>().find("20") == std::string::npos) continue;
+    ++issue20;
+    for (const char* key : {"target", "bound", "unit", "measured", "status", "how"})
+      EXPECT_TRUE(t.contains(key)) << t["target"] << ": " << key;
+  }
+  EXPECT_EQ(issue20, 7);  // paper 1e-8, linearized, odeint, CVODE, map, two threads, auto
+  ASSERT_FALSE(j["auto_grid"].empty());
+  EXPECT_TRUE(j["auto_grid"][0].contains("best_integrator"));
 }
 
 // A rigid target without a yield strength and the Hertz law: the Hertz closed form (SPEC §2)

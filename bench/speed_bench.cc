@@ -3,19 +3,26 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include <unistd.h>  // getpid: the map's scratch CSV
+
 #include "closed_forms/linear_model.h"
 #include "solver/sweep.h"
 
 namespace ivv::bench {
+using verification::describe_machine;
+using verification::kErrorFloor;
+using verification::measure_peers;
+using verification::scene_label;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kStiffZeta = 100.0;
 // the stiff scene's reference: dop853 this tight (see the header)
 constexpr double kStiffReferenceTol = 1e-13;
 
@@ -24,26 +31,9 @@ struct Timing {
   int min_repeats;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// Median wall-clock of f() over repeats [us]; f runs at least min_repeats times and until
-// min_seconds have passed.
 template <class F>
 double median_us(F&& f, const Timing& timing) {
-  using Clock = std::chrono::steady_clock;
-  std::vector<double> us;
-  const auto start = Clock::now();
-  do {
-    const auto t0 = Clock::now();
-    f();
-    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
-  } while (static_cast<int>(us.size()) < timing.min_repeats ||
-           std::chrono::duration<double>(Clock::now() - start).count() < timing.min_seconds);
-  return median(us);
+  return verification::median_microseconds(f, timing.min_seconds, timing.min_repeats);
 }
 
 double rel(double x, double ref) {
@@ -59,10 +49,10 @@ Scene paper_at(double v0, double zeta) {
   return s;
 }
 
-BenchPoint measure(const SimulationRequest& req, const std::string& scene,
+SpeedPoint measure(const SimulationRequest& req, const std::string& scene,
                    const std::string& reference_name, const ImpactResult& ref, double setting,
                    const Timing& timing) {
-  BenchPoint pt;
+  SpeedPoint pt;
   pt.integrator = std::string(to_string(req.integrator));
   pt.law = std::string(to_string(req.law));
   pt.scene = scene;
@@ -85,10 +75,10 @@ BenchPoint measure(const SimulationRequest& req, const std::string& scene,
   return pt;
 }
 
-double best_us(const std::vector<BenchPoint>& pts, const std::string& scene, const std::string& law,
+double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, const std::string& law,
                double level, bool use_F, std::string* who = nullptr) {
   double best = kNaN;
-  for (const BenchPoint& p : pts) {
+  for (const SpeedPoint& p : pts) {
     if (!p.ok || p.scene != scene || p.law != law) continue;
     const double err = use_F ? std::max(p.err_e, p.err_F) : p.err_e;
     if (!(err <= level)) continue;
@@ -101,8 +91,9 @@ double best_us(const std::vector<BenchPoint>& pts, const std::string& scene, con
 }
 
 BenchTarget target(std::string name, double bound, std::string unit, double measured,
-                   std::string how) {
-  BenchTarget t{std::move(name), bound, std::move(unit), measured, false, kNaN, std::move(how)};
+                   std::string how, std::string issue = "8") {
+  BenchTarget t{std::move(issue), std::move(name), bound, std::move(unit),
+                measured,         false,           kNaN,  std::move(how)};
   if (!std::isnan(measured)) {
     t.ratio = measured / bound;
     t.met = measured <= bound;
@@ -110,66 +101,146 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
   return t;
 }
 
-}  // namespace
+// ---- issue 20's targets -------------------------------------------------------------------
 
-std::string scene_label(double v0, double zeta) {
-  std::ostringstream os;
-  os << (zeta >= kStiffZeta ? "stiff" : "paper") << " v0=" << v0 << " zeta=" << zeta;
-  return os.str();
+// ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),
+// as ivv time / peer time: the target "ivv >= N x faster" is a bound 1/N on it.
+void add_peer_ratio_targets(BenchReport& rep) {
+  const auto rows = verification::ratio_table(rep.points, rep.peers);
+  const auto row =
+      std::find_if(rows.begin(), rows.end(), [](const RatioRow& r) { return r.level == 1e-8; });
+  if (row == rows.end()) return;
+  auto peer_us = [&](Peer p) {
+    for (std::size_t i = 0; i < std::size(kPeers); ++i)
+      if (kPeers[i] == p) return row->peer_us[i];
+    return kNaN;
+  };
+  const double odeint = peer_us(Peer::odeint_dopri5_dense);
+  const double adams = peer_us(Peer::cvode_adams), bdf = peer_us(Peer::cvode_bdf);
+  const bool adams_faster = !(bdf < adams);  // NaN (level not reached) loses
+  const double cvode = adams_faster ? adams : bdf;
+  const std::string at = " at |de|/e <= 1e-8 on the paper scene";
+  rep.targets.push_back(
+      target("ivv >= 10x faster than the odeint idiom" + at, 0.1, "ratio", row->ivv_us / odeint,
+             "ivv's fastest run (" + row->ivv_integrator +
+                 ") / odeint-dopri5-dense's fastest, both "
+                 "reaching the level, measured in this run (peers: verification/peers.h)",
+             "20"));
+  rep.targets.push_back(
+      target("ivv >= 25x faster than CVODE" + at, 0.04, "ratio", row->ivv_us / cvode,
+             "ivv's fastest run (" + row->ivv_integrator +
+                 ") / the faster of CVODE Adams and BDF (" + (adams_faster ? "Adams" : "BDF") +
+                 ") reaching the level, each with its own root "
+                 "finding, measured in this run",
+             "20"));
 }
 
-std::vector<BenchPoint> measure_peers(const std::vector<double>& tols, const ImpactResult& ref,
-                                      double min_seconds, int min_repeats) {
-  const Timing timing{min_seconds, min_repeats};
-  const Scene scene = paper_at(1.0, 0.1);
-  std::vector<BenchPoint> out;
-  for (Peer peer : kPeers) {
-    for (double tol : tols) {
-      BenchPoint pt;
-      pt.integrator = to_string(peer);
-      pt.law = "elastoplastic";
-      pt.scene = scene_label(1.0, 0.1);
-      pt.reference = "mp50";
-      pt.rtol = tol;
-      PeerResult r = run_peer(peer, scene, tol);
-      pt.rhs_evals = r.rhs_evaluations;
-      pt.ok = r.ok;
-      pt.reason = r.reason;
-      if (r.ok) {
-        pt.err_e = rel(r.e, ref.e);
-        pt.err_F = rel(r.F_max, ref.F_max);
-        pt.err_t = rel(r.t_contact, ref.t_contact);
-        pt.us_per_impact = median_us([&] { r = run_peer(peer, scene, tol); }, timing);
-      } else {
-        pt.err_e = pt.err_F = pt.err_t = pt.us_per_impact = kNaN;
+// The median of three runs of the map through SweepSink (journal, partial CSV, the CSV written
+// atomically: what `ivv sweep --out` does, without the sidecar) [s]; *failed: failed points.
+double time_map_with_csv(const SweepRequest& sweep, int threads, int* failed) {
+  SweepRequest r = sweep;
+  r.threads = threads;
+  const std::filesystem::path csv = std::filesystem::temp_directory_path() /
+                                    ("ivv-bench-map-" + std::to_string(::getpid()) + ".csv");
+  std::vector<double> runs;
+  for (int k = 0; k < 3; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    SweepOutputOptions out;
+    out.csv = csv;
+    SweepSink sink(r, out);
+    run_sweep_points(r, sink, {});
+    sink.finish([&](const SweepCounts& c) { *failed = static_cast<int>(c.failed); });
+    runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::filesystem::remove(csv);
+  std::sort(runs.begin(), runs.end());
+  return runs[1];
+}
+
+// Issue 20's map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
+// --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
+// scaled to 90000 points.
+void add_map_targets(BenchReport& rep, bool quick) {
+  const int nv = quick ? 60 : 300, nz = quick ? 30 : 300;
+  SweepRequest sweep;
+  sweep.base.scene = paper_scene();
+  sweep.base.law = LawKind::elastoplastic;
+  sweep.base.model = ModelKind::automatic;
+  sweep.base.auto_integrator = true;
+  sweep.base.integrator = IntegratorKind::dop853;
+  sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
+  sweep.velocities = log_grid(0.1, 10.0, nv);
+  sweep.zetas = linear_grid(0.0, 1.0, nz);
+  const double scale = (300.0 * 300.0) / (nv * nz);
+  int failed_one = 0, failed_two = 0;
+  const double one = time_map_with_csv(sweep, 1, &failed_one) * scale;
+  const double two = time_map_with_csv(sweep, 2, &failed_two) * scale;
+  const std::string grid = quick ? "60 x 30 subgrid scaled to 90000 impacts; " : "";
+  rep.targets.push_back(
+      target("300 x 300 COR map with its CSV at rtol 1e-8, --model auto, one thread", 0.4, "s", one,
+             grid + "run_sweep_points into a SweepSink (journal, CSV), median of 3; " +
+                 std::to_string(failed_one) + " failed points (a failed point counts as a miss)",
+             "20"));
+  if (failed_one > 0) rep.targets.back().met = false;
+  rep.targets.push_back(target(
+      "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
+      grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
+      "20"));
+}
+
+// --integrator auto against the fastest fixed integrator at every point of a grid that holds
+// the heavily damped scenes of issue 20 (zeta 8 and 16), elastoplastic, --model full (the
+// choice is of an integrator), rtol = atol = 1e-8. The fixed candidates: every production
+// integrator with error control (rk4 has none). A fixed run that fails is no candidate.
+void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timing) {
+  const std::vector<double> v0s =
+      quick ? std::vector<double>{1.0, 5.0} : std::vector<double>{0.3, 1.0, 5.0};
+  const std::vector<double> zetas = quick ? std::vector<double>{0.1, 8.0, 16.0}
+                                          : std::vector<double>{0.0, 0.1, 1.0, 4.0, 8.0, 16.0};
+  AutoPoint worst;
+  bool worst_failed = false;  // auto failed at a point: that point is the miss
+  for (double v0 : v0s)
+    for (double zeta : zetas) {
+      SimulationRequest req;
+      req.scene = paper_at(v0, zeta);
+      req.options.rtol = req.options.atol = 1e-8;
+      AutoPoint pt{v0, zeta, "", kNaN, "", kNaN, kNaN};
+      SimulationRequest a = req;
+      a.auto_integrator = true;
+      ImpactResult r = simulate(a);
+      pt.auto_integrator = std::string(r.integrator);
+      if (r.ok()) pt.auto_us = median_us([&] { r = simulate(a); }, timing);
+      for (IntegratorKind k : production_integrators()) {
+        if (traits(k).fixed_step) continue;
+        req.integrator = k;
+        ImpactResult f = simulate(req);
+        if (!f.ok()) continue;
+        const double us = median_us([&] { f = simulate(req); }, timing);
+        if (!(us >= pt.best_us)) {
+          pt.best_us = us;
+          pt.best_integrator = std::string(to_string(k));
+        }
       }
-      out.push_back(pt);
+      pt.ratio = pt.auto_us / pt.best_us;  // NaN when auto failed: a miss
+      rep.auto_grid.push_back(pt);
+      const bool failed = std::isnan(pt.ratio);
+      if (!worst_failed && (failed || pt.ratio > worst.ratio)) {
+        worst = pt;
+        worst_failed = failed;
+      }
     }
-  }
-  return out;
+  std::ostringstream how;
+  how << "max over " << rep.auto_grid.size() << " points (v0 x zeta, elastoplastic, --model "
+      << "full, rtol 1e-8) of auto's time / the fastest fixed integrator's; worst at v0 = "
+      << worst.v0 << " m/s, zeta = " << worst.zeta << ": auto chose " << worst.auto_integrator
+      << ", fastest " << worst.best_integrator << " (auto_grid in the JSON)";
+  if (worst_failed) how << "; auto's run or every fixed run failed there";
+  rep.targets.push_back(target(
+      "--integrator auto within 1.25x of the best fixed integrator", 1.25, "ratio",
+      worst_failed ? std::numeric_limits<double>::infinity() : worst.ratio, how.str(), "20"));
 }
 
-std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
-                                  const std::vector<BenchPoint>& peers) {
-  const std::string scene = scene_label(1.0, 0.1);
-  std::vector<RatioRow> rows;
-  for (double level : {1e-6, 1e-8, 1e-10, 1e-12}) {
-    RatioRow row;
-    row.level = level;
-    row.ivv_us = best_us(points, scene, "elastoplastic", level, false, &row.ivv_integrator);
-    for (Peer peer : kPeers) {
-      double best = kNaN;
-      for (const BenchPoint& p : peers)
-        if (p.ok && p.integrator == to_string(peer) && p.err_e <= level &&
-            (std::isnan(best) || p.us_per_impact < best))
-          best = p.us_per_impact;
-      row.peer_us.push_back(best);
-      row.peer_ratio.push_back(best / row.ivv_us);
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
+}  // namespace
 
 BenchReport run_bench(const BenchOptions& options,
                       const std::function<void(const std::string&)>& progress) {
@@ -221,11 +292,11 @@ BenchReport run_bench(const BenchOptions& options,
     }
   }
   {
-    const std::string label = scene_label(1.0, kStiffZeta);
+    const std::string label = scene_label(1.0, verification::kStiffSceneZeta);
     // the linearized law is undefined there (z_m far below 2.25 z_y with so stiff a dashpot)
     for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
       SimulationRequest base;
-      base.scene = paper_at(1.0, kStiffZeta);
+      base.scene = paper_at(1.0, verification::kStiffSceneZeta);
       base.law = law;
       SimulationRequest rq = base;
       rq.integrator = IntegratorKind::dop853;
@@ -245,7 +316,7 @@ BenchReport run_bench(const BenchOptions& options,
       }
     }
   }
-  say("bench: peers (gsl-rk8pd-driver, odeint-dopri5-dense) on the paper scene");
+  say("bench: peers (GSL, odeint, SUNDIALS CVODE and ARKODE) on the paper scene");
   rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
 
   say("bench: targets");
@@ -255,7 +326,8 @@ BenchReport run_bench(const BenchOptions& options,
   const double t12 = best_us(rep.points, paper, "elastoplastic", 1e-12, false, &who12);
   rep.targets.push_back(target(
       "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
-      "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1"));
+      "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
+      "8, 20"));
   rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
                                "fastest point with err_e <= 1e-12 (" + who12 + ")"));
   {
@@ -273,10 +345,11 @@ BenchReport run_bench(const BenchOptions& options,
                       kBatch;
     rep.targets.push_back(target("linearized closed form", 0.3, "us", sink != 0 ? us : kNaN,
                                  "oracles::solve_linear_model on the paper scene, median of "
-                                 "batches of 1000 calls"));
+                                 "batches of 1000 calls",
+                                 "8, 20"));
   }
-  const double ts =
-      best_us(rep.points, scene_label(1.0, kStiffZeta), "elastoplastic", 1e-6, true, &whos);
+  const double ts = best_us(rep.points, scene_label(1.0, verification::kStiffSceneZeta),
+                            "elastoplastic", 1e-6, true, &whos);
   rep.targets.push_back(target("zeta = 100 within 1e-6", 100.0, "us", ts,
                                "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
                                    "), elastoplastic, against dop853 at 1e-13"));
@@ -333,6 +406,10 @@ BenchReport run_bench(const BenchOptions& options,
                                         "thread; the per-point error check is the case "
                                         "autochoice.model"));
   }
+  say("bench: issue 20's targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
+  add_peer_ratio_targets(rep);
+  add_map_targets(rep, options.quick);
+  add_auto_integrator_target(rep, options.quick, timing);
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   return rep;
 }
@@ -341,7 +418,7 @@ namespace {
 nlohmann::json num(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
-nlohmann::json point_json(const BenchPoint& p) {
+nlohmann::json point_json(const SpeedPoint& p) {
   nlohmann::json j = {{"integrator", p.integrator}, {"law", p.law},
                       {"scene", p.scene},           {"rtol", p.rtol},
                       {"err_e", num(p.err_e)},      {"err_F", num(p.err_F)},
@@ -363,9 +440,21 @@ std::string to_json(const BenchReport& r) {
   for (const auto& p : r.points) j["points"].push_back(point_json(p));
   j["peers"] = nlohmann::json::array();
   for (const auto& p : r.peers) j["peers"].push_back(point_json(p));
+  j["peer_setups"] = nlohmann::json::object();
+  for (Peer p : kPeers) j["peer_setups"][verification::to_string(p)] = verification::setup(p);
+  j["auto_grid"] = nlohmann::json::array();
+  for (const auto& a : r.auto_grid)
+    j["auto_grid"].push_back({{"v0", a.v0},
+                              {"zeta", a.zeta},
+                              {"auto_integrator", a.auto_integrator},
+                              {"auto_us", num(a.auto_us)},
+                              {"best_integrator", a.best_integrator},
+                              {"best_us", num(a.best_us)},
+                              {"ratio", num(a.ratio)}});
   j["targets"] = nlohmann::json::array();
   for (const auto& t : r.targets)
-    j["targets"].push_back({{"target", t.name},
+    j["targets"].push_back({{"issue", t.issue},
+                            {"target", t.name},
                             {"bound", t.bound},
                             {"unit", t.unit},
                             {"measured", num(t.measured)},
@@ -403,14 +492,24 @@ std::string to_text(const BenchReport& r) {
       os << "   " << std::setw(8) << row.peer_us[i] << " (x" << row.peer_ratio[i] << ")";
     os << "\n";
   }
-  os << "\ntargets (issue 8, part 5):\n";
+  os << "\npeers (the same impact, rtol = atol = the tolerance):\n";
+  for (Peer p : kPeers) os << "  " << to_string(p) << ": " << verification::setup(p) << "\n";
+  if (!r.auto_grid.empty()) {
+    os << "\n--integrator auto against the fastest fixed integrator (elastoplastic, --model full, "
+          "rtol 1e-8):\n";
+    for (const auto& a : r.auto_grid)
+      os << "  v0 = " << std::setw(4) << a.v0 << " m/s, zeta = " << std::setw(4) << a.zeta
+         << ": auto (" << a.auto_integrator << ") " << std::setprecision(3) << a.auto_us
+         << " us, best (" << a.best_integrator << ") " << a.best_us << " us, x" << a.ratio << "\n";
+  }
+  os << "\ntargets (issue 8, part 5; issue 20):\n";
   for (const auto& t : r.targets) {
     os << "  "
        << (std::isnan(t.measured) ? "n/a "
            : t.met                ? "pass"
                                   : "MISS")
-       << "  " << t.name << ": target <= " << t.bound << " " << t.unit << ", measured "
-       << std::setprecision(3) << t.measured << " " << t.unit;
+       << "  [issue " << t.issue << "] " << t.name << ": target <= " << t.bound << " " << t.unit
+       << ", measured " << std::setprecision(3) << t.measured << " " << t.unit;
     if (!std::isnan(t.ratio)) os << " (x" << t.ratio << " of the target)";
     os << "\n        " << t.how << "\n";
   }

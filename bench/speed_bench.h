@@ -1,5 +1,5 @@
 // `ivv bench`: speed against error for every integrator and law, with the peers measured in
-// the same run and the targets of issue 8 printed beside the measured figures.
+// the same run and the targets of issues 8 and 20 printed beside the measured figures.
 //
 // Scenes: the paper scene (Table 1) at v0 in {0.1, 1, 5} m/s and zeta in {0, 0.1}, and a stiff
 // scene (v0 = 1 m/s, zeta = 100: the dashpot time scale 1/(2 zeta) in tau is 200 times shorter
@@ -19,6 +19,17 @@
 // with odeint-rosenbrock4 at 1e-13 to ~5e-11 in F_max): stated in the JSON as reference.
 // The stiff scene is a capture (e = 0): err_e is then the absolute error of e.
 //
+// Peers (verification/peers.h, every one set up as stated there and in the JSON's
+// peer_setups): GSL rk8pd behind its driver, odeint's dense dopri5, SUNDIALS CVODE Adams and
+// BDF and ARKODE ERK with their own root finding, on the paper scene at v0 = 1 m/s, zeta = 0.1.
+//
+// Issue 20's targets, measured in the same run: the paper scene at |de|/e <= 1e-8 (time, and
+// ivv's time over odeint's and over the faster CVODE's at that level); the 300 x 300 map (v0
+// 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto, --integrator auto) through
+// SweepSink with its journal and CSV, wall clock on one and two threads (--quick: 60 x 30,
+// scaled); --integrator auto against the fastest fixed integrator on every point of a grid with
+// the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
+//
 // Timings are never pass/fail; quote ratios measured in one run, with `machine`.
 #pragma once
 
@@ -26,22 +37,21 @@
 #include <string>
 #include <vector>
 
-#include "bench/peers.h"
-#include "bench/work_precision.h"
+#include "verification/peers.h"
+#include "verification/work_precision.h"
 
 namespace ivv::bench {
 
-struct BenchPoint {
-  std::string integrator, law, scene, reference;
-  double rtol = 0.0;  // rtol = atol; rk4: dt in tau
-  double err_e = 0.0, err_F = 0.0, err_t = 0.0;
-  double us_per_impact = 0.0;  // median [us]
-  long rhs_evals = 0;
-  bool ok = true;
-  std::string reason;
-};
+// The measurements are the verification layer's (the report draws the same ones); bench only
+// runs them over its grid, times them and states the targets.
+using verification::kPeers;
+using verification::MachineInfo;
+using verification::Peer;
+using verification::RatioRow;
+using verification::SpeedPoint;
 
 struct BenchTarget {
+  std::string issue;   // the issue that set it ("8", "20", "8, 20")
   std::string name;    // what the target says
   double bound = 0.0;  // the target [us] (or [s] for the map)
   std::string unit;
@@ -55,34 +65,25 @@ struct BenchOptions {
   bool quick = false;
 };
 
+// One point of the --integrator auto grid (issue 20): auto's time against the fastest fixed
+// integrator's on the same request (elastoplastic, --model full, rtol = atol = 1e-8).
+struct AutoPoint {
+  double v0 = 0.0, zeta = 0.0;  // [m/s], [-]
+  std::string auto_integrator;  // what auto chose
+  double auto_us = 0.0;         // median [us]
+  std::string best_integrator;  // the fastest fixed integrator that succeeded
+  double best_us = 0.0;         // median [us]
+  double ratio = 0.0;           // auto_us / best_us
+};
+
 struct BenchReport {
   MachineInfo machine;
-  std::vector<BenchPoint> points;
-  std::vector<BenchPoint> peers;  // integrator = the peer's name, law elastoplastic
+  std::vector<SpeedPoint> points;
+  std::vector<SpeedPoint> peers;  // integrator = the peer's name, law elastoplastic
+  std::vector<AutoPoint> auto_grid;
   std::vector<BenchTarget> targets;
   double seconds = 0.0;  // wall clock of the whole run
 };
-
-// One row per error level of the ratio table: the fastest time reaching err_e <= level on the
-// paper scene (v0 = 1 m/s, zeta = 0.1, elastoplastic) for ivv (any integrator) and each peer.
-struct RatioRow {
-  double level = 0.0;
-  double ivv_us = 0.0;  // NaN when no point reaches the level
-  std::string ivv_integrator;
-  std::vector<double> peer_us;     // per kPeers entry, NaN when not reached
-  std::vector<double> peer_ratio;  // peer_us / ivv_us
-};
-std::vector<RatioRow> ratio_table(const std::vector<BenchPoint>& points,
-                                  const std::vector<BenchPoint>& peers);
-
-// The paper scene's label in points ("paper v0=1 zeta=0.1").
-std::string scene_label(double v0, double zeta);
-
-// Peers on the paper scene (v0 = 1 m/s, zeta = 0.1) over `tols`, against `reference` (the mp50
-// run of the elastoplastic law on that scene).
-std::vector<BenchPoint> measure_peers(const std::vector<double>& tols,
-                                      const ImpactResult& reference, double min_seconds,
-                                      int min_repeats);
 
 // Runs everything; `progress` (may be empty) gets one line per stage.
 BenchReport run_bench(const BenchOptions& options,

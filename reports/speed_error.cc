@@ -11,22 +11,23 @@ namespace {
 using verification::Plot;
 using verification::Series;
 
-std::string machine_text(const bench::MachineInfo& m) {
+std::string machine_text(const verification::MachineInfo& m) {
   return escape(m.cpu_model) + ", " + std::to_string(m.logical_cores) + " logical cores, " +
          escape(m.compiler) + ", " + escape(m.build_type) + " build";
 }
 
-void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::string& id,
-                            const std::vector<bench::BenchPoint>& peers, std::vector<Figure>& out) {
+void work_precision_figures(const verification::WorkPrecisionStudy& study, const std::string& id,
+                            const std::vector<verification::SpeedPoint>& peers,
+                            std::vector<Figure>& out) {
   struct Metric {
     const char* key;
     const char* name;
     const char* key_label;
-    double bench::WorkPrecisionPoint::*error;
+    double verification::WorkPrecisionPoint::*error;
   };
-  for (const Metric m :
-       {Metric{"e", "COR e", "e", &bench::WorkPrecisionPoint::error_e},
-        Metric{"fmax", "peak force F_max", "F_max", &bench::WorkPrecisionPoint::error_F_max}}) {
+  for (const Metric m : {Metric{"e", "COR e", "e", &verification::WorkPrecisionPoint::error_e},
+                         Metric{"fmax", "peak force F_max", "F_max",
+                                &verification::WorkPrecisionPoint::error_F_max}}) {
     Plot p;
     p.id = "speed-" + id + "-" + m.key;
     p.title = "Work-precision, " + study.label + ": relative error of " + m.name +
@@ -49,12 +50,12 @@ void work_precision_figures(const bench::WorkPrecisionStudy& study, const std::s
       }
       p.series.push_back(c);
     }
-    for (bench::Peer peer : bench::kPeers) {
+    for (verification::Peer peer : verification::kPeers) {
       Series c;
-      c.label = "peer: " + bench::to_string(peer);
+      c.label = "peer: " + verification::to_string(peer);
       c.style = Series::Style::points;
       for (const auto& pt : peers) {
-        if (pt.integrator != bench::to_string(peer) || !pt.ok) continue;
+        if (pt.integrator != verification::to_string(peer) || !pt.ok) continue;
         c.x.push_back(pt.us_per_impact * 1e-6);
         c.y.push_back(std::string(m.key) == "e" ? pt.err_e : pt.err_F);
       }
@@ -97,9 +98,9 @@ SpeedSection speed_section(const SectionOptions& options) {
   out.peers = wp.peers;
   out.ratios = wp.ratios;
   for (std::size_t i = 0; i < wp.studies.size(); ++i)
-    work_precision_figures(wp.studies[i], wp.ids[i],
-                           wp.ids[i] == "paper" ? wp.peers : std::vector<bench::BenchPoint>{},
-                           out.figures);
+    work_precision_figures(
+        wp.studies[i], wp.ids[i],
+        wp.ids[i] == "paper" ? wp.peers : std::vector<verification::SpeedPoint>{}, out.figures);
 
   options.say("speed: convergence of rk4 and dp45 (fixed step), from the study the cases read");
   {
@@ -111,7 +112,7 @@ SpeedSection speed_section(const SectionOptions& options) {
     p.x_label = "fixed step dt in normalised time τ [-]";
     p.y_label = "relative error of e vs closed form [-]";
     p.log_x = p.log_y = true;
-    for (const bench::ConvergenceStudy& c : st.runs) {
+    for (const verification::ConvergenceStudy& c : st.runs) {
       out.convergence.push_back(c);
       Series s;
       s.label = std::string(to_string(c.integrator)) +
@@ -143,10 +144,23 @@ SpeedSection speed_section(const SectionOptions& options) {
   return out;
 }
 
+namespace {
+// How each peer is set up, so that a reader can judge the comparison fair
+// (verification/peers.h says it at length).
+std::string peer_setups_html() {
+  std::string out =
+      "<p>How each peer is set up (the same problem, tolerance rtol = atol):</p>\n<ul>\n";
+  for (verification::Peer p : verification::kPeers)
+    out += "<li><b>" + escape(verification::to_string(p)) +
+           "</b>: " + escape(verification::setup(p)) + "</li>\n";
+  return out + "</ul>\n";
+}
+}  // namespace
+
 std::string ratio_table_html(const SpeedSection& s) {
   std::vector<std::string> head = {"error of e at most", "ivv best [µs]", "ivv integrator"};
-  for (bench::Peer p : bench::kPeers) {
-    head.push_back(bench::to_string(p) + " [µs]");
+  for (verification::Peer p : verification::kPeers) {
+    head.push_back(verification::to_string(p) + " [µs]");
     head.push_back("ratio");
   }
   std::vector<std::vector<std::string>> rows;
@@ -163,7 +177,7 @@ std::string ratio_table_html(const SpeedSection& s) {
          "fastest run of each peer (same scene, same mp50 reference, same machine and run); "
          "ratio = peer time / ivv time (above 1: ivv is faster). NaN: no run reached the "
          "level.</p>\n" +
-         table(head, rows, Source::timing());
+         table(head, rows, Source::timing()) + peer_setups_html();
 }
 
 }  // namespace ivv::reports

@@ -12,6 +12,7 @@ packages=(
   libgsl-dev                          # odeiv2, integration
   libgtest-dev libgmock-dev
   libbenchmark-dev
+  libsundials-dev                     # CVODE, ARKODE: peers in the speed studies and `ivv bench`
   libfccp-dev                         # fast-cpp-csv-parser
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libmuparser-dev                     # expression contact laws

@@ -10,6 +10,7 @@
 
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
+#include "solver/format.h"
 #include "solver/parallel.h"
 
 namespace ivv {
@@ -31,13 +32,17 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 namespace {
 
-std::string format(const char* fmt, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, x);
-  return buf;
-}
+// Room for a row without its reason: 12 numbers of at most 24 characters, the step count, the
+// route, integrator and status names and the separators.
+constexpr std::size_t kSweepRowCapacity = 12 * 24 + 20 + 3 * 32 + 17;
+
+// Inputs at 17 significant digits (they read back exactly: a row can be re-run), results at
+// 12; the same bytes as printf's %.17g and %.12g (solver/format.h).
+constexpr int kInputDigits = 17;
+constexpr int kResultDigits = 12;
+
 std::string exact(double x) {
-  return format("%.17g", x);
+  return fmt(x, kInputDigits);
 }
 
 // "v0,zeta," of a point: the start of its row, used to check rows read back from disk.
@@ -112,8 +117,7 @@ void validate(const SweepRequest& req) {
       static_cast<double>(req.velocities.size()) * static_cast<double>(req.zetas.size());
   if (points > kMaxSweepPoints)
     throw InputError("--v0", "the grid --v0 x --zeta has " + std::to_string(req.velocities.size()) +
-                                 " x " + std::to_string(req.zetas.size()) + " = " +
-                                 format("%.3g", points) +
+                                 " x " + std::to_string(req.zetas.size()) + " = " + fmt(points, 3) +
                                  " points; at most 1e8 are accepted (split the study)");
   for (double v : req.velocities)
     if (!(std::isfinite(v) && v > 0))
@@ -145,17 +149,26 @@ std::string sweep_csv_header() {
          "energy_residual,steps,route,integrator,status,reason\n";
 }
 
-std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
-  std::string row = exact(v0) + ',' + exact(zeta) + ',';
+void append_sweep_csv_row(std::string& row, double v0, double zeta, const ImpactResult& r) {
+  append_general(row, v0, kInputDigits);
+  row += ',';
+  append_general(row, zeta, kInputDigits);
+  row += ',';
   if (r.ok()) {
     for (double x : {r.e, r.e_poisson, r.e_energetic, r.F_max, r.t_F_max, r.t_contact, r.z_max,
-                     r.alpha_max, r.z_perm, r.energy.residual})
-      row += format("%.12g", x) + ',';
+                     r.alpha_max, r.z_perm, r.energy.residual}) {
+      append_general(row, x, kResultDigits);
+      row += ',';
+    }
   } else {
-    row += std::string(10, ',');  // no number is better than a plausible wrong one
+    row.append(10, ',');  // no number is better than a plausible wrong one
   }
-  row += std::to_string(r.steps) + ',' + std::string(r.route) + ',' + std::string(r.integrator) +
-         ',' + std::string(to_string(r.status)) + ',';
+  append_integer(row, r.steps);
+  for (std::string_view name : {r.route, r.integrator, to_string(r.status)}) {
+    row += ',';
+    row += name;
+  }
+  row += ',';
   if (!r.reason.empty()) {
     row += '"';
     for (char c : r.reason) {
@@ -166,7 +179,14 @@ std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
   } else if (!r.ok()) {
     row += "\"failed without a reason\"";
   }
-  return row + '\n';
+  row += '\n';
+}
+
+std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
+  std::string row;
+  row.reserve(kSweepRowCapacity + r.reason.size());
+  append_sweep_csv_row(row, v0, zeta, r);
+  return row;
 }
 
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {

@@ -70,6 +70,9 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& request);
 // column empty (never a plausible 0), keeps steps and gives the reason (quoted, RFC 4180).
 std::string sweep_csv_header();
 std::string sweep_csv_row(double v0, double zeta, const ImpactResult& result);
+// The same row appended to `row` (no allocation once its capacity suffices; numbers by
+// std::to_chars, solver/format.h: the bytes of printf's %.17g and %.12g).
+void append_sweep_csv_row(std::string& row, double v0, double zeta, const ImpactResult& result);
 // Runs point `index` and returns its row. A throwing simulate() becomes std::runtime_error
 // naming the point.
 std::string run_sweep_point(const SweepRequest& request, std::size_t index);

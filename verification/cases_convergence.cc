@@ -23,19 +23,19 @@
 #include <map>
 #include <tuple>
 
-#include "bench/work_precision.h"
 #include "solver/consistency.h"
 #include "solver/integrator_choice.h"
 #include "solver/model_choice.h"
 #include "verification/cases.h"
 #include "verification/study_speed.h"
 #include "verification/support.h"
+#include "verification/work_precision.h"
 
 namespace ivv::verification {
 namespace {
 
-Plot convergence_plot(const std::string& id, const bench::ConvergenceStudy& located,
-                      const bench::ConvergenceStudy& naive) {
+Plot convergence_plot(const std::string& id, const ConvergenceStudy& located,
+                      const ConvergenceStudy& naive) {
   Plot p;
   p.id = id;
   p.title = "Error in e against the fixed step";
@@ -72,7 +72,7 @@ Outcome generic_order_case(IntegratorKind k) {
   const SimulationRequest base = request(with(paper_scene(), 1.0, 0.1), LawKind::linearized, k);
   const int p = traits(k).order;
   const auto& steps = p >= 8 ? kStepsHighOrder : kStepsLowOrder;
-  const bench::OrderStudy study = bench::measure_order(base, k, steps, kOrderErrorFloor);
+  const OrderStudy study = measure_order(base, k, steps, kOrderErrorFloor);
   std::string errors;
   for (std::size_t i = 0; i < study.errors_e.size(); ++i)
     errors += (errors.empty() ? "" : ", ") + fmt(study.errors_e[i], 3) +
@@ -99,8 +99,8 @@ Outcome generic_order_case(IntegratorKind k) {
 // study the report's convergence figure draws).
 Outcome step_ends_case(IntegratorKind k) {
   const FixedStepConvergenceStudy& st = fixed_step_convergence_study();
-  const bench::ConvergenceStudy& located = st.of(k, true);
-  const bench::ConvergenceStudy& naive = st.of(k, false);
+  const ConvergenceStudy& located = st.of(k, true);
+  const ConvergenceStudy& naive = st.of(k, false);
   std::string errors;
   for (double e : naive.errors_e) errors += (errors.empty() ? "" : ", ") + fmt(e, 3);
   Outcome o = at_most(
@@ -249,12 +249,12 @@ Outcome work_precision_case() {
   int judged = 0, failed = 0, unnamed = 0;
   std::string at = "no point", per_integrator;
   for (std::size_t i = 0; i < wp.studies.size(); ++i) {
-    const bench::WorkPrecisionStudy& st = wp.studies[i];
+    const WorkPrecisionStudy& st = wp.studies[i];
     const double e_ref = std::abs(st.reference.e);
-    for (const bench::WorkPrecisionSeries& series : st.series) {
+    for (const WorkPrecisionSeries& series : st.series) {
       if (traits(series.integrator).fixed_step) continue;  // rk4: a step, not a tolerance
       double series_worst = 0;
-      for (const bench::WorkPrecisionPoint& pt : series.points) {
+      for (const WorkPrecisionPoint& pt : series.points) {
         if (!pt.ok) {
           ++failed;
           if (pt.reason.empty()) ++unnamed;

@@ -23,8 +23,8 @@ FixedStepConvergenceStudy compute_convergence() {
     for (bool located : {true, false}) {
       SimulationRequest base = st.base;
       base.integrator = k;
-      st.runs.push_back(bench::measure_convergence(
-          base, k, k == IntegratorKind::rk4 ? rk4_steps : dp45_steps, located));
+      st.runs.push_back(
+          measure_convergence(base, k, k == IntegratorKind::rk4 ? rk4_steps : dp45_steps, located));
     }
   return st;
 }
@@ -131,8 +131,7 @@ std::vector<HardCaseRow> compute_hard_cases() {
 
 }  // namespace
 
-const bench::ConvergenceStudy& FixedStepConvergenceStudy::of(IntegratorKind k,
-                                                             bool events_located) const {
+const ConvergenceStudy& FixedStepConvergenceStudy::of(IntegratorKind k, bool events_located) const {
   for (const auto& r : runs)
     if (r.integrator == k && r.events_located == events_located) return r;
   throw std::out_of_range("no fixed-step convergence run of " + std::string(to_string(k)));
@@ -154,8 +153,8 @@ namespace {
 
 WorkPrecisionStudies compute_work_precision(bool quick) {
   WorkPrecisionStudies out;
-  out.machine = bench::describe_machine();
-  bench::WorkPrecisionOptions wp;
+  out.machine = describe_machine();
+  WorkPrecisionOptions wp;
   if (quick) {
     wp.rtols = {1e-4, 1e-7, 1e-10};
     wp.rk4_steps = {1e-1, 1e-2, 1e-3};
@@ -174,18 +173,18 @@ WorkPrecisionStudies compute_work_precision(bool quick) {
     base.scene = paper_at(1.0, Damping::ratio(spec.zeta));
     // quick: a 1e-20 reference still resolves the >= 1e-16 errors of double precision
     if (quick) base.options.reference_tolerance = 1e-20;
-    out.studies.push_back(bench::measure_work_precision(spec.label, base, wp));
+    out.studies.push_back(measure_work_precision(spec.label, base, wp));
     out.ids.push_back(spec.id);
     if (std::string(spec.id) != "paper") continue;
-    out.peers = bench::measure_peers(wp.rtols, out.studies.back().reference,
-                                     wp.min_seconds_per_point, wp.min_repeats);
-    std::vector<bench::BenchPoint> ivv_points;
+    out.peers = measure_peers(wp.rtols, out.studies.back().reference, wp.min_seconds_per_point,
+                              wp.min_repeats);
+    std::vector<SpeedPoint> ivv_points;
     for (const auto& series : out.studies.back().series)
       for (const auto& pt : series.points) {
-        bench::BenchPoint b;
+        SpeedPoint b;
         b.integrator = std::string(to_string(series.integrator));
         b.law = "elastoplastic";
-        b.scene = bench::scene_label(1.0, 0.1);
+        b.scene = scene_label(1.0, 0.1);
         b.rtol = pt.tolerance;
         b.ok = pt.ok;
         b.err_e = pt.error_e;
@@ -195,7 +194,7 @@ WorkPrecisionStudies compute_work_precision(bool quick) {
         b.rhs_evals = pt.rhs_evaluations;
         ivv_points.push_back(b);
       }
-    out.ratios = bench::ratio_table(ivv_points, out.peers);
+    out.ratios = ratio_table(ivv_points, out.peers);
   }
   return out;
 }

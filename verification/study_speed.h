@@ -3,7 +3,7 @@
 //
 //   * fixed_step_convergence_study(): the error of e of rk4 and dp45 (error control off) against
 //     the fixed step, with events located on the interpolant and noticed only at step ends
-//     (bench::measure_convergence), on the linearized law, Table 1 scene, v0 = 1 m/s,
+//     (measure_convergence), on the linearized law, Table 1 scene, v0 = 1 m/s,
 //     zeta = 0.1, against its closed form (paper eqs 22-25). Steps in normalised time tau:
 //     rk4 0.2 ... 0.00625, dp45 0.1 ... 0.0125 (the coarsest already asymptotic, the finest
 //     above round-off). Judged by convergence.rk4.events-at-step-ends and
@@ -14,32 +14,32 @@
 //     exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of each
 //     run is recorded as information only: it is measured while other cases may run on other
 //     threads, and nothing is ever judged on it.
-//   * work_precision_study(quick): the work-precision diagrams (bench::measure_work_precision)
+//   * work_precision_study(quick): the work-precision diagrams (measure_work_precision)
 //     on the Table 1 scene at v0 = 1 m/s, zeta = 0.1 and on a stiff dashpot (zeta = 10), every
 //     double-precision integrator over rtol = atol 1e-4 ... 1e-13 (rk4: dt 0.1 ... 1e-4 in tau),
-//     errors against the mp50 reference; and the peers (bench/peers.h) on the paper scene with
-//     the ratio table. The errors are judged by convergence.work-precision (each point's
-//     error of e within the accumulated tolerance bound of solver/consistency.h); the times
-//     are information only (medians of repeated single-threaded runs, taken while other cases
-//     may run). quick = true: rtol 1e-4, 1e-7, 1e-10, one timed run per point, reference at
-//     1e-20 (the report's test mode); the cases read the full study.
+//     errors against the mp50 reference; and the peers (verification/peers.h) on the paper scene
+//     with the ratio table. The errors are judged by convergence.work-precision (each point's error
+//     of e within the accumulated tolerance bound of solver/consistency.h); the times are
+//     information only (medians of repeated single-threaded runs, taken while other cases may run).
+//     quick = true: rtol 1e-4, 1e-7, 1e-10, one timed run per point, reference at 1e-20 (the
+//     report's test mode); the cases read the full study.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "bench/speed_bench.h"
-#include "bench/work_precision.h"
 #include "solver/simulate.h"
+#include "verification/peers.h"
+#include "verification/work_precision.h"
 
 namespace ivv::verification {
 
 struct FixedStepConvergenceStudy {
   SimulationRequest base;  // linearized law, Table 1 scene, 1 m/s, zeta = 0.1
   // rk4 located, rk4 at step ends, dp45 located, dp45 at step ends
-  std::vector<bench::ConvergenceStudy> runs;
+  std::vector<ConvergenceStudy> runs;
   // The run of integrator `k` (rk4 or dp45) with or without event location.
-  const bench::ConvergenceStudy& of(IntegratorKind k, bool events_located) const;
+  const ConvergenceStudy& of(IntegratorKind k, bool events_located) const;
 };
 const FixedStepConvergenceStudy& fixed_step_convergence_study();
 
@@ -59,13 +59,13 @@ struct HardCaseRow {
 const std::vector<HardCaseRow>& hard_case_study();
 
 struct WorkPrecisionStudies {
-  std::vector<bench::WorkPrecisionStudy> studies;  // "paper" (zeta = 0.1), then "stiff" (10)
-  std::vector<std::string> ids;                    // "paper", "stiff"
+  std::vector<WorkPrecisionStudy> studies;  // "paper" (zeta = 0.1), then "stiff" (10)
+  std::vector<std::string> ids;             // "paper", "stiff"
   // The peers on the paper study's scene and tolerances, and per error level ivv's best time
-  // against each peer's (bench::ratio_table): timings, information only.
-  std::vector<bench::BenchPoint> peers;
-  std::vector<bench::RatioRow> ratios;
-  bench::MachineInfo machine;
+  // against each peer's (ratio_table): timings, information only.
+  std::vector<SpeedPoint> peers;
+  std::vector<RatioRow> ratios;
+  MachineInfo machine;
 };
 const WorkPrecisionStudies& work_precision_study(bool quick = false);
 

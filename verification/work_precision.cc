@@ -1,4 +1,4 @@
-#include "bench/work_precision.h"
+#include "verification/work_precision.h"
 
 #include "closed_forms/linear_model.h"
 
@@ -12,12 +12,12 @@
 #include <stdexcept>
 #include <thread>
 
-// The CMake build type, set by bench/CMakeLists.txt.
+// The CMake build type, set by verification/CMakeLists.txt.
 #ifndef IVV_BUILD_TYPE
 #define IVV_BUILD_TYPE ""
 #endif
 
-namespace ivv::bench {
+namespace ivv::verification {
 namespace {
 
 double floored(double error) {
@@ -253,4 +253,4 @@ ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKi
   return study;
 }
 
-}  // namespace ivv::bench
+}  // namespace ivv::verification

@@ -1,6 +1,6 @@
 // Tests of the work-precision and convergence measurements. No assertion here is on a timing:
 // timings are never pass/fail (work_precision.h); these check the errors and the bookkeeping.
-#include "bench/work_precision.h"
+#include "verification/work_precision.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace ivv::bench {
+namespace ivv::verification {
 namespace {
 
 // The undamped linearized paper scene at 1 m/s: z_m = 3.4 z_y, inside the law's domain
@@ -168,4 +168,4 @@ TEST(Convergence, RefusesWhatTheClosedFormDoesNotDescribe) {
 }
 
 }  // namespace
-}  // namespace ivv::bench
+}  // namespace ivv::verification

@@ -40,6 +40,8 @@
 //   measured one.
 #pragma once
 
+#include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -48,10 +50,29 @@
 #include "solver/result.h"
 #include "solver/simulate.h"
 
-namespace ivv::bench {
+namespace ivv::verification {
 
 // Errors of exactly zero are reported as this value (see "Error conventions" above).
 inline constexpr double kErrorFloor = 1e-17;
+
+// Median wall-clock time of one call of f() [us] (std::chrono::steady_clock, this thread): f
+// runs at least min_repeats times and until min_seconds have passed (see "Why the timing is a
+// median of repeats" above). Used by the peers' measurement and by `ivv bench`.
+template <class F>
+double median_microseconds(F&& f, double min_seconds, int min_repeats) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> us;
+  const auto start = Clock::now();
+  do {
+    const auto t0 = Clock::now();
+    f();
+    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+  } while (static_cast<int>(us.size()) < min_repeats ||
+           std::chrono::duration<double>(Clock::now() - start).count() < min_seconds);
+  std::sort(us.begin(), us.end());
+  const std::size_t n = us.size();
+  return n % 2 ? us[n / 2] : 0.5 * (us[n / 2 - 1] + us[n / 2]);
+}
 
 // Where a timing was taken: timings mean nothing without it.
 struct MachineInfo {
@@ -148,4 +169,4 @@ struct OrderStudy {
 OrderStudy measure_order(const SimulationRequest& base, IntegratorKind kind,
                          const std::vector<double>& settings, double error_floor);
 
-}  // namespace ivv::bench
+}  // namespace ivv::verification

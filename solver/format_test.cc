@@ -1,0 +1,142 @@
+// solver/format.h: the same bytes as printf's "%.{p}g" and an std::ostream at precision p, and
+// shortest forms that read back exactly.
+#include "solver/format.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <vector>
+
+namespace ivv {
+namespace {
+
+// Doubles over the whole exponent range (subnormals to the largest), both signs, plus the
+// values whose formatting has edges: zeros, integers, round decimals, ties at 12 and 17 digits,
+// the limits, the non-finite.
+std::vector<double> samples() {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> v = {0.0,
+                           -0.0,
+                           1.0,
+                           -1.0,
+                           0.1,
+                           1.0 / 3.0,
+                           2.0 / 3.0,
+                           0.5,
+                           1e-4,
+                           9.9999999999999e-5,
+                           1e-5,
+                           123456789012.0,
+                           999999999999.5,
+                           1e12,
+                           1e17,
+                           1e23,
+                           0.30000000000000004,
+                           std::numeric_limits<double>::min(),
+                           std::numeric_limits<double>::denorm_min(),
+                           std::numeric_limits<double>::max(),
+                           std::numeric_limits<double>::epsilon(),
+                           inf,
+                           -inf,
+                           std::numeric_limits<double>::quiet_NaN(),
+                           -std::numeric_limits<double>::quiet_NaN()};
+  std::mt19937_64 gen(20);
+  std::uniform_int_distribution<std::uint64_t> bits;
+  std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-12, 12);
+  for (int i = 0; i < 4000; ++i) {
+    // any bit pattern: every exponent, subnormals, NaN payloads
+    const std::uint64_t b = bits(gen);
+    double x;
+    static_assert(sizeof x == sizeof b);
+    std::memcpy(&x, &b, sizeof x);
+    v.push_back(x);
+    // and the magnitudes a sweep prints
+    v.push_back((i % 2 ? -1 : 1) * mantissa(gen) * std::pow(10.0, exponent(gen)));
+  }
+  return v;
+}
+
+std::string printf_g(double x, int precision) {
+  char buf[64];
+  const int n = std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+  return std::string(buf, n);
+}
+
+TEST(Format, GeneralIsPrintfGAtEveryPrecision) {
+  int mismatches = 0;
+  for (double x : samples())
+    for (int p = 0; p <= kMaxPrecision; ++p) {
+      std::string s;
+      append_general(s, x, p);
+      if (s != printf_g(x, p) && ++mismatches <= 10)
+        ADD_FAILURE() << "precision " << p << ": " << s << " vs printf " << printf_g(x, p);
+    }
+  EXPECT_EQ(mismatches, 0);
+}
+
+TEST(Format, FmtIsAnOstreamAtItsPrecision) {
+  for (double x : samples()) {
+    if (std::isnan(x)) continue;  // an ostream prints a NaN's sign as printf does; not its job
+    for (int p : {3, 6, 12}) {
+      std::ostringstream os;
+      os.precision(p);
+      os << x;
+      EXPECT_EQ(fmt(x, p), os.str()) << p;
+    }
+    std::ostringstream os;
+    os << x;
+    EXPECT_EQ(fmt(x), os.str());
+  }
+}
+
+TEST(Format, SeventeenDigitsAndShortestReadBackExactly) {
+  for (double x : samples()) {
+    if (!std::isfinite(x)) continue;
+    std::string g, s;
+    append_general(g, x, 17);
+    append_shortest(s, x);
+    EXPECT_EQ(std::strtod(g.c_str(), nullptr), x) << g;
+    EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
+    EXPECT_LE(s.size(), g.size()) << s << " vs " << g;
+  }
+  std::string s;
+  append_shortest(s, 0.1);
+  EXPECT_EQ(s, "0.1");
+  s.clear();
+  append_general(s, 0.1, 17);
+  EXPECT_EQ(s, "0.10000000000000001");
+}
+
+TEST(Format, PrecisionOutsideZeroToSeventeenIsClamped) {
+  EXPECT_EQ(fmt(1.0 / 3.0, -5), printf_g(1.0 / 3.0, 0));
+  EXPECT_EQ(fmt(1.0 / 3.0, 40), printf_g(1.0 / 3.0, 17));
+}
+
+TEST(Format, Integers) {
+  std::string s;
+  append_integer(s, 0);
+  s += ',';
+  append_integer(s, -42);
+  s += ',';
+  append_integer(s, std::numeric_limits<long long>::min());
+  EXPECT_EQ(s, "0,-42,-9223372036854775808");
+}
+
+TEST(Format, AppendingWithinCapacityDoesNotReallocate) {
+  std::string s;
+  s.reserve(256);
+  const char* data = s.data();
+  for (int i = 0; i < 5; ++i) append_general(s, -1.2345678901234567e-308, 17);
+  EXPECT_EQ(s.data(), data);
+  EXPECT_EQ(s.size(), 5 * 24u);
+}
+
+}  // namespace
+}  // namespace ivv
