@@ -2,8 +2,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <string>
 
+#include "solver/atomic_file.h"
+#include "scene/input_error.h"
 #include "solver/simulate.h"
 
 namespace ivv::bench {
@@ -73,7 +77,37 @@ void register_all() {
 
 }  // namespace
 
+void validate_benchmark_arguments(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const std::size_t eq = arg.find('=');
+    if (arg.rfind("--benchmark_", 0) != 0 || eq == std::string::npos) continue;
+    const std::string flag = arg.substr(0, eq), value = arg.substr(eq + 1);
+    if (flag == "--benchmark_min_time") {
+      // a number of seconds ("0.5", "0.5s") or of iterations ("100x")
+      std::string number = value;
+      if (!number.empty() && (number.back() == 's' || number.back() == 'x')) number.pop_back();
+      char* end = nullptr;
+      const double v = std::strtod(number.c_str(), &end);
+      if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(v) ||
+          !(v > 0) || v > 3600)
+        throw InputError(flag,
+                         "must be a number of seconds in (0, 3600] (e.g. 0.5s) or of "
+                         "iterations (e.g. 100x), got '" +
+                             value + "'");
+    } else if (flag == "--benchmark_repetitions") {
+      char* end = nullptr;
+      const long n = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || end != value.c_str() + value.size() || n < 1 || n > 1000)
+        throw InputError(flag, "must be an integer in [1, 1000], got '" + value + "'");
+    } else if (flag == "--benchmark_out") {
+      resolve_output_path(value, flag);  // a regular file or a new path in an existing directory
+    }
+  }
+}
+
 int run_benchmarks(int argc, char** argv) {
+  validate_benchmark_arguments(argc, argv);  // before Google Benchmark sees them
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   register_all();

@@ -20,6 +20,11 @@ void require_target(double e) {
 // Below this u0 one Newton step on log1pmx(-e u0) = log1pmx(u0) polishes the estimate; above
 // it the Lambert-W form is already within a few ulps (its error is ~eps/u0^2).
 constexpr double kPolishMaxU0 = 1.0;
+// ... and above this one: the polish divides by the slope -e u0^2/(1 - e u0), which underflows
+// (to 0 below u0 ~ 1e-162, giving e = 0/0 = NaN, issue 21 item 2) or loses digits in the
+// subnormal range well before; at u0 = 1e-4 it is 1e-8, a normal number, and below it the
+// series' truncation, |c9| u0^9 < 1e-36, leaves nothing to polish.
+constexpr double kPolishMinU0 = 1e-4;
 
 }  // namespace
 
@@ -45,7 +50,7 @@ double hunt_crossley_cor(double u0) {
     const double x = -std::exp(-1.0 + log1pmx(u0));
     e = (1.0 + boost::math::lambert_w0(x)) / u0;
   }
-  if (u0 < kPolishMaxU0) {
+  if (u0 >= kPolishMinU0 && u0 < kPolishMaxU0) {
     const double residual = log1pmx(-e * u0) - log1pmx(u0);
     const double slope = -e * u0 * u0 / (1.0 - e * u0);
     e -= residual / slope;

@@ -60,6 +60,18 @@ TEST(HuntCrossley, SmallDampingLimit) {
   EXPECT_EQ(hunt_crossley_cor(0.0), 1.0);
 }
 
+// Issue 21 item 2: at u0 = mu v0 ~ 1e-165 the Newton polish divided 0 by an underflowed slope
+// and `simulate --law hunt-crossley --hc-mu 1e-200` printed "separated, e = -nan". Down to the
+// smallest subnormal u0 the COR is 1 - (2/3) u0 to round-off, i.e. 1.
+TEST(HuntCrossley, TinyDampingIsFiniteNotNaN) {
+  for (double u0 : {1e-20, 1e-100, 1e-165, 1e-200, 1e-300, std::numeric_limits<double>::min(),
+                    std::numeric_limits<double>::denorm_min()}) {
+    const double e = hunt_crossley_cor(u0);
+    EXPECT_TRUE(std::isfinite(e)) << u0;
+    EXPECT_NEAR(e, 1.0, kRoundOff) << u0;
+  }
+}
+
 TEST(HuntCrossley, LargeDampingLimit) {
   // e = (1 - s)/u0 with s = -W0(-(1+u0)e^{-(1+u0)}) ~ (1+u0) e^{-(1+u0)}: e u0 -> 1 with an
   // exponentially small defect (1.5e-5 at u0 = 10, below double precision at u0 = 50).

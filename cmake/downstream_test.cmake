@@ -10,6 +10,7 @@ add_test(NAME downstream_package
                  -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
                  -DCXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}
                  -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
+                 "-DCXX_FLAGS=${CMAKE_CXX_FLAGS}"
                  -P ${PROJECT_SOURCE_DIR}/cmake/downstream_test_run.cmake)
 # Compiling the conformance headers (every integrator, the 50-digit reference) dominates.
 set_tests_properties(downstream_package PROPERTIES LABELS package TIMEOUT 900 PROCESSORS 2)

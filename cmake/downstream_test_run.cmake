@@ -31,10 +31,15 @@ foreach(component ivv_development ivv_data)
        --component ${component})
 endforeach()
 
+# The downstream project is compiled as ivv was (CXX_FLAGS: the preset's warnings and, for
+# asan, its sanitizers); the installed targets also carry the sanitizer link options.
+if(NOT CXX_FLAGS)
+  set(CXX_FLAGS "-Wall -Wextra -Wpedantic")
+endif()
 set(configure_args -S ${IVV_SOURCE_DIR}/examples/downstream -B ${build} -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
     -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
-    "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic")
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}")
 if(CXX_COMPILER_LAUNCHER)
   list(APPEND configure_args -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
 endif()

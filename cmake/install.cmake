@@ -19,6 +19,20 @@ file(CREATE_LINK ${PROJECT_SOURCE_DIR}/reference_data ${PROJECT_BINARY_DIR}/shar
 
 set_target_properties(ivv_scene PROPERTIES EXPORT_NAME scene)
 set_target_properties(ivv_closed_forms PROPERTIES EXPORT_NAME closed_forms)
+# An instrumented build (the asan preset's -fsanitize=address,undefined in CMAKE_CXX_FLAGS)
+# installs instrumented objects: whoever links them needs the sanitizer runtimes, so the
+# installed targets carry the same -fsanitize= as a link option (issue 21 item 15: the
+# downstream project failed with "undefined reference to __asan_init"). fuzzer-no-link is a
+# compile-only instrumentation and is not passed on.
+string(REGEX MATCHALL "-fsanitize=[^ ]+" ivv_sanitize_flags "${CMAKE_CXX_FLAGS}")
+foreach(flag IN LISTS ivv_sanitize_flags)
+  string(REPLACE "fuzzer-no-link," "" flag "${flag}")
+  string(REPLACE ",fuzzer-no-link" "" flag "${flag}")
+  if(NOT flag STREQUAL "-fsanitize=fuzzer-no-link")
+    target_link_options(ivv_scene INTERFACE ${flag})
+  endif()
+endforeach()
+
 set_target_properties(ivv_solver PROPERTIES EXPORT_NAME solver)
 set_target_properties(ivv_oracles PROPERTIES EXPORT_NAME oracles)
 set_target_properties(ivv_conformance PROPERTIES EXPORT_NAME conformance)

@@ -89,7 +89,16 @@ nlohmann::json result_json(const ImpactResult& r) {
       {"events", events},
   };
   if (!r.reason.empty()) j["reason"] = r.reason;
-  if (r.status == ImpactStatus::captured) j["e_bound"] = r.e_bound;
+  if (r.status == ImpactStatus::captured) {
+    // the end state (solver/capture_end_state.h): the contact never ends, so t_contact (and
+    // t_alpha_max when the impactor never turned back) is infinite, null here; when capture
+    // was established is t_capture, an "at capture" time
+    j["e_bound"] = r.e_bound;
+    j["t_capture"] = r.t_capture;
+    j["contact_ends"] = false;
+    if (!std::isfinite(r.t_contact)) j["t_contact"] = nullptr;
+    if (!std::isfinite(r.t_alpha_max)) j["t_alpha_max"] = nullptr;
+  }
   return j;
 }
 

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <toml++/toml.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -290,6 +291,25 @@ void parse_target(const toml::table& tgt, Scene& s) {
   s.target_mass = number(tgt, "target", "mass");
 }
 
+// The scene's `name`: a string of 1 to kMaxSceneNameLength printable characters (it is printed
+// and written into JSON sidecars and reports); absent: the file's stem. `name = 42` and names
+// with control characters were accepted (issue 21 item 14).
+constexpr std::size_t kMaxSceneNameLength = 200;
+std::string scene_name(const toml::table& root, const std::string& source_name) {
+  const toml::node* node = root.get("name");
+  if (!node) return std::filesystem::path(source_name).stem().string();
+  const std::optional<std::string> name = node->value<std::string>();
+  const auto control = [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f;
+  };
+  if (!name || !node->is_string() || name->empty() || name->size() > kMaxSceneNameLength ||
+      std::any_of(name->begin(), name->end(), control))
+    throw InputError("name", "must be a string of 1 to " + std::to_string(kMaxSceneNameLength) +
+                                 " characters without control characters");
+  return *name;
+}
+
 }  // namespace
 
 Scene parse_scene_toml(const std::string& text, const std::string& source_name) {
@@ -305,7 +325,7 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name) 
   reject_unknown_keys(root, "", {"name", "impactor", "target", "damping", "impact"});
 
   Scene s;
-  s.name = root["name"].value_or(std::filesystem::path(source_name).stem().string());
+  s.name = scene_name(root, source_name);
 
   const toml::table& imp = require_table(root, "impactor");
   reject_unknown_keys(imp, "impactor", {"mass", "radius", "youngs_modulus", "poisson_ratio"});
@@ -343,6 +363,15 @@ std::string read_scene_text(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError("--scene", "'" + path.string() + "' is a directory, not a scene file");
+  // opening a FIFO blocks until a writer comes, for ever if none does (issue 21 item 11)
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (std::filesystem::is_fifo(st) || std::filesystem::is_socket(st) ||
+      std::filesystem::is_block_file(st))
+    throw InputError("--scene", "'" + path.string() + "' is " +
+                                    (std::filesystem::is_fifo(st)     ? "a FIFO"
+                                     : std::filesystem::is_socket(st) ? "a socket"
+                                                                      : "a block device") +
+                                    ", not a scene file; give a regular TOML file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("--scene", "cannot read scene file '" + path.string() + "'");
   std::string text(kMaxSceneFileBytes + 1, '\0');

@@ -1,9 +1,14 @@
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "scene/input_error.h"
 #include "solver/simulate.h"
@@ -216,6 +221,41 @@ TEST(SceneParser, DirectoryAndEndlessFilesAreRefusedByName) {
     FAIL() << "/dev/zero was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("larger than"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 21 item 11: `mkfifo f.toml; ivv simulate --scene f.toml` blocked for ever.
+TEST(SceneParser, FifoIsRefusedWithoutBlocking) {
+  const std::filesystem::path fifo =
+      std::filesystem::temp_directory_path() / ("ivv_scene_fifo_" + std::to_string(getpid()));
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    load_scene(fifo.string());
+    ADD_FAILURE() << "a FIFO was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "--scene");
+    EXPECT_NE(std::string(e.what()).find("a FIFO"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(fifo);
+}
+
+// Issue 21 item 14: `name = 42` and names with control characters were accepted.
+TEST(SceneParser, NameMustBeAPrintableString) {
+  const std::string body =
+      "[impactor]\nmass = 0.5\nradius = 0.01\nyoungs_modulus = 207e9\npoisson_ratio = 0.3\n"
+      "[target]\nyoungs_modulus = 7.9e9\npoisson_ratio = 0.3\n[impact]\nvelocity = 1.0\n";
+  EXPECT_EQ(parse_scene_toml("name = \"steel ball\"\n" + body, "s.toml").name, "steel ball");
+  EXPECT_EQ(parse_scene_toml(body, "dir/s.toml").name, "s");  // absent: the file's stem
+  for (const std::string& bad :
+       std::vector<std::string>{"name = 42\n", "name = \"a\\u0001b\"\n", "name = \"\"\n",
+                                "name = \"" + std::string(201, 'x') + "\"\n"}) {
+    try {
+      parse_scene_toml(bad + body, "s.toml");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "name") << bad;
+    }
   }
 }
 

@@ -1,7 +1,9 @@
 #include "solver/atomic_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -44,6 +46,15 @@ fs::path resolve_output_path(const fs::path& path, const std::string& field, boo
     if (allow_stdout) return path;
     throw InputError(name, "'-' (standard output) is not accepted here; give a file path");
   }
+  // What the kernel itself opens (it also follows /proc's magic links, e.g. /dev/stdout to a
+  // pipe, which read_symlink below cannot: their targets are names like "pipe:[123]").
+  {
+    std::error_code ec;
+    const fs::file_status opened = fs::status(path, ec);
+    if (fs::exists(opened) && !fs::is_regular_file(opened))
+      throw InputError(name, "'" + path.string() + "' is " + describe(opened.type()) +
+                                 "; an output must be a regular file or a new path");
+  }
   fs::path target = path;
   for (int links = 0;; ++links) {
     std::error_code ec;
@@ -70,6 +81,55 @@ fs::path resolve_output_path(const fs::path& path, const std::string& field, boo
   return target;
 }
 
+namespace {
+std::string temporary_prefix(const fs::path& target) {
+  // built with += : GCC 12 warns falsely (-Wrestrict) on a chain of std::string operator+
+  std::string prefix = ".";
+  prefix += target.filename().string();
+  prefix += ".tmp";
+  return prefix;
+}
+}  // namespace
+
+StagedFile::StagedFile(const fs::path& path, const std::function<void(std::ostream&)>& write,
+                       const std::string& field)
+    : target_(resolve_output_path(path, field, false)) {
+  const std::string name = field.empty() ? path.string() : field;
+  const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
+  std::random_device rd;
+  std::string tmp_name = temporary_prefix(target_);
+  tmp_name += std::to_string(getpid());
+  tmp_name += "-";
+  tmp_name += std::to_string(rd());
+  tmp_ = dir / tmp_name;
+  try {
+    std::ofstream out(tmp_, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(name, "cannot create a file in '" + dir.string() + "'");
+    write(out);
+    out.flush();
+    if (!out) throw std::runtime_error("write to '" + tmp_.string() + "' failed");
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp_, ignored);
+    throw;
+  }
+}
+
+StagedFile::~StagedFile() {
+  if (committed_) return;
+  std::error_code ignored;
+  fs::remove(tmp_, ignored);
+}
+
+void StagedFile::commit() {
+  // an existing file keeps its permissions
+  std::error_code ec;
+  const fs::file_status old = fs::status(target_, ec);
+  if (!ec && fs::is_regular_file(old)) fs::permissions(tmp_, old.permissions(), ec);
+  fs::rename(tmp_, target_);
+  committed_ = true;
+}
+
 void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write,
                            const std::string& field, bool allow_stdout) {
   const fs::path target = resolve_output_path(path, field, allow_stdout);
@@ -79,35 +139,32 @@ void write_file_atomically(const fs::path& path, const std::function<void(std::o
     if (!std::cout) throw std::runtime_error("write to standard output failed");
     return;
   }
-  const std::string name = field.empty() ? path.string() : field;
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::random_device rd;
-  // built with += : GCC 12 warns falsely (-Wrestrict) on a chain of std::string operator+
-  std::string tmp_name = ".";
-  tmp_name += target.filename().string();
-  tmp_name += ".tmp";
-  tmp_name += std::to_string(getpid());
-  tmp_name += "-";
-  tmp_name += std::to_string(rd());
-  const fs::path tmp = dir / tmp_name;
-  try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw InputError(name, "cannot create a file in '" + dir.string() + "'");
-      write(out);
-      out.flush();
-      if (!out) throw std::runtime_error("write to '" + tmp.string() + "' failed");
-    }
-    // an existing file keeps its permissions
-    std::error_code ec;
-    const fs::file_status old = fs::status(target, ec);
-    if (!ec && fs::is_regular_file(old)) fs::permissions(tmp, old.permissions(), ec);
-    fs::rename(tmp, target);
-  } catch (...) {
+  StagedFile staged(target, write, field.empty() ? path.string() : field);
+  staged.commit();
+}
+
+std::size_t remove_stale_temporaries(const fs::path& path) {
+  std::error_code ec;
+  const fs::path target = path.has_parent_path() ? path : fs::path(".") / path;
+  const std::string prefix = temporary_prefix(target);
+  std::size_t removed = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    // ".NAME.tmp" PID "-" N
+    const std::string rest = name.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == std::string::npos || dash == 0) continue;
+    if (rest.find_first_not_of("0123456789") != dash) continue;
+    if (rest.find_first_not_of("0123456789", dash + 1) != std::string::npos) continue;
+    const long pid = std::stol(rest.substr(0, dash));
+    if (pid <= 0 || pid == static_cast<long>(getpid())) continue;
+    // kill(pid, 0) fails with ESRCH only when no such process exists
+    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw;
+    if (entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
   }
+  return removed;
 }
 
 }  // namespace ivv

@@ -13,6 +13,7 @@
 //     InputError naming `field` (the flag the user typed, e.g. "--out").
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -33,5 +34,31 @@ std::filesystem::path resolve_output_path(const std::filesystem::path& path,
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write,
                            const std::string& field = {}, bool allow_stdout = false);
+
+// A file written to its temporary (".NAME.tmpPID-N" beside the destination) but not yet in
+// place: files that belong together (a sweep's CSV and its sidecar) are all written first and
+// then committed one after another, so that an error while writing any of them leaves none.
+// The destination is checked as for write_file_atomically ("-" is not accepted). The destructor
+// removes the temporary unless commit() renamed it into place.
+class StagedFile {
+ public:
+  StagedFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+             const std::string& field = {});
+  ~StagedFile();
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+  void commit();  // rename over the destination (keeping an existing file's permissions)
+  const std::filesystem::path& target() const { return target_; }
+
+ private:
+  std::filesystem::path target_, tmp_;
+  bool committed_ = false;
+};
+
+// Removes the temporaries of `path` (".NAME.tmpPID-N" in its directory) left by a process that
+// no longer runs (killed while writing: issue 21 item 9 found tens of MB left by a SIGKILL).
+// A temporary of a live process, or of a PID that this process cannot probe, is kept. Returns
+// how many were removed.
+std::size_t remove_stale_temporaries(const std::filesystem::path& path);
 
 }  // namespace ivv

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -101,6 +102,45 @@ TEST_F(AtomicFile, DeviceIsRejectedAndLeftAlone) {
 TEST_F(AtomicFile, FifoIsRejected) {
   ASSERT_EQ(mkfifo((dir_ / "fifo").c_str(), 0600), 0);
   EXPECT_EQ(rejected_field(dir_ / "fifo"), "--out");
+}
+
+// Issue 21 item 10: `sweep --out /dev/stdout | cat` ran the whole sweep, then failed: the
+// magic link /proc/self/fd/N reads as "pipe:[...]", which looked like a new file in /proc.
+TEST_F(AtomicFile, PipeBehindAMagicLinkIsRejectedBeforeAnyWork) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const fs::path magic = "/proc/self/fd/" + std::to_string(fds[1]);
+  EXPECT_EQ(rejected_field(magic), "--out");
+  close(fds[0]);
+  close(fds[1]);
+}
+
+// Issue 21 item 9: a run killed while writing left ".NAME.tmpPID-N" for ever.
+TEST_F(AtomicFile, TemporariesOfDeadProcessesAreRemovedOthersKept) {
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  ASSERT_GT(child, 0);
+  waitpid(child, nullptr, 0);  // reaped: no process has this PID now
+  const fs::path dead = dir_ / (".g.csv.tmp" + std::to_string(child) + "-12");
+  const fs::path mine = dir_ / (".g.csv.tmp" + std::to_string(getpid()) + "-3");
+  const fs::path other_file = dir_ / (".h.csv.tmp" + std::to_string(child) + "-12");
+  for (const fs::path& p : {dead, mine, other_file}) std::ofstream(p) << "x";
+  EXPECT_EQ(remove_stale_temporaries(dir_ / "g.csv"), 1u);
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(mine));        // this process may still be writing it
+  EXPECT_TRUE(fs::exists(other_file));  // another destination's
+}
+
+// A staged file is in place only once committed; dropped uncommitted, it leaves nothing.
+TEST_F(AtomicFile, StagedFileAppearsOnlyOnCommit) {
+  {
+    StagedFile staged(dir_ / "a.json", [](std::ostream& out) { out << "{}"; });
+    EXPECT_FALSE(fs::exists(dir_ / "a.json"));
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
+  StagedFile staged(dir_ / "a.json", [](std::ostream& out) { out << "{}"; });
+  staged.commit();
+  EXPECT_EQ(slurp(dir_ / "a.json"), "{}");
 }
 
 TEST_F(AtomicFile, DirectoryAndEmptyPathAreRejectedNamingTheFlag) {

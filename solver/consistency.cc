@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace ivv {
 
@@ -49,6 +50,48 @@ std::string consistency_failure(const ConsistencyMeasures& m, const IntegratorOp
     return os.str();
   }
   return {};
+}
+
+bool fail_non_finite_outcome(ImpactResult& r, std::string_view what) {
+  if (!r.ok()) return false;
+  const bool captured = r.status == ImpactStatus::captured;
+  auto never = [captured](double t) { return captured && t == INFINITY; };
+  const EnergyLedger& led = r.energy;
+  const std::pair<const char*, bool> fields[] = {
+      {"e", std::isfinite(r.e)},
+      {"e_poisson", std::isfinite(r.e_poisson)},
+      {"e_energetic", std::isfinite(r.e_energetic)},
+      {"F_max", std::isfinite(r.F_max)},
+      {"t_F_max", std::isfinite(r.t_F_max)},
+      {"z_max", std::isfinite(r.z_max)},
+      {"t_z_max", std::isfinite(r.t_z_max)},
+      {"alpha_max", std::isfinite(r.alpha_max)},
+      {"t_alpha_max", std::isfinite(r.t_alpha_max) || never(r.t_alpha_max)},
+      {"z_perm", std::isfinite(r.z_perm)},
+      {"y_final", std::isfinite(r.y_final)},
+      {"t_contact", std::isfinite(r.t_contact) || never(r.t_contact)},
+      {"rebound_velocity", std::isfinite(r.rebound_velocity)},
+      {"impactor_velocity_after", std::isfinite(r.impactor_velocity_after)},
+      {"target_velocity_after", std::isfinite(r.target_velocity_after)},
+      {"impulse", std::isfinite(r.impulse)},
+      {"impulse_compression", std::isfinite(r.impulse_compression)},
+      {"energy.final", std::isfinite(led.final)},
+      {"energy.stored", std::isfinite(led.stored)},
+      {"energy.plastic", std::isfinite(led.plastic)},
+      {"energy.viscous", std::isfinite(led.viscous)},
+      {"energy.residual", std::isfinite(led.residual)},
+  };
+  for (const auto& [name, finite] : fields) {
+    if (finite) continue;
+    std::ostringstream os;
+    os << what << ": the run ended " << to_string(r.status) << " but its " << name
+       << " is not a finite number; the result is not reported as valid";
+    r.status = ImpactStatus::failed;
+    r.failure = FailureKind::integrator;
+    r.reason = os.str();
+    return true;
+  }
+  return false;
 }
 
 }  // namespace ivv

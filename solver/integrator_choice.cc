@@ -10,10 +10,10 @@ namespace {
 // Undamped maximum compression [m] of the elastoplastic (and, below yield, Hertz) curve, by
 // energy (SPEC §2): an upper bound on z_m with a dashpot.
 double undamped_z_max(const Scene& s, const DerivedParameters& p) {
-  const double E0 = 0.5 * s.mass * s.velocity * s.velocity;
+  const double E0 = 0.5 * p.effective_mass * s.velocity * s.velocity;
   const double sqrt_zy = std::sqrt(p.z_y);
   const double E_y = 0.4 * p.K_h * p.z_y * p.z_y * sqrt_zy;
-  if (E0 <= E_y) return std::pow(1.25 * s.mass * s.velocity * s.velocity / p.K_h, 0.4);
+  if (E0 <= E_y) return std::pow(1.25 * p.effective_mass * s.velocity * s.velocity / p.K_h, 0.4);
   const double b = p.K_h * p.z_y * sqrt_zy;  // (K_y/2) d^2 + b d = E0 - E_y
   const double d = (-b + std::sqrt(b * b + 2.0 * p.K_y * (E0 - E_y))) / p.K_y;
   return p.z_y + d;
@@ -26,11 +26,21 @@ std::string fmt(double v) {
   return os.str();
 }
 
+// Without a yield strength (zeta and z_y are NaN there, issue 21 item 6) the law runs in the
+// Hertz scales: the loading time 1/omega = z_mH/v0 and the stiffness at the undamped Hertz
+// maximum compression z_mH, 1.5 K_h sqrt(z_mH), so S = 1.5 K_h z_mH^{3/2}/(c v0), the same
+// measure (relaxation rate K/c times the loading time) in the law's own scales.
+double hertz_stiffness_ratio(const Scene& s, const DerivedParameters& p) {
+  const double z_mH = std::pow(1.25 * p.effective_mass * s.velocity * s.velocity / p.K_h, 0.4);
+  return 1.5 * p.K_h * z_mH * std::sqrt(z_mH) / (p.c * s.velocity);
+}
+
 }  // namespace
 
 double stiffness_ratio(const Scene& scene, const DerivedParameters& p) {
   // validate() refuses a dashpot for a law that carries its own damping
   if (!p.has_dashpot()) return 0.0;
+  if (!p.has_yield()) return hertz_stiffness_ratio(scene, p);
   return 2.0 * p.zeta * std::max(1.0, std::sqrt(undamped_z_max(scene, p) / p.z_y));
 }
 
@@ -43,7 +53,13 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
   IntegratorChoice c;
   const DerivedParameters p = derive(req.scene);
   const bool dashpot = p.has_dashpot();
-  if (dashpot) {
+  if (dashpot && !p.has_yield()) {
+    c.stiffness_ratio = stiffness_ratio(req.scene, p);
+    c.reasons.push_back(
+        "stiffness ratio S = 1.5 K_h z_mH^{3/2}/(c v0) = " + fmt(c.stiffness_ratio) +
+        " (dashpot relaxation rate at the Hertz maximum compression z_mH over "
+        "the loading rate v0/z_mH: the scene has no yield strength)");
+  } else if (dashpot) {
     const double k_max = std::max(1.0, std::sqrt(undamped_z_max(req.scene, p) / p.z_y));
     c.stiffness_ratio = stiffness_ratio(req.scene, p);
     c.reasons.push_back("stiffness ratio S = 2 zeta k_max = 2 x " + fmt(p.zeta) + " x " +

@@ -61,11 +61,14 @@ struct ImpactResult {
   double t_F_max = 0.0;           // [s]
   double z_max = 0.0;             // maximum spring deformation z_m [m]
   double t_z_max = 0.0;           // [s]
-  double alpha_max = 0.0;         // maximum impactor displacement alpha_c [m]
-  double t_alpha_max = 0.0;       // [s]
+  double alpha_max = 0.0;         // maximum impactor displacement alpha_c [m] (captured
+                                  // without turning back: the limit z_f + m* v0/c)
+  double t_alpha_max = 0.0;       // [s]; +inf when that limit is approached, not reached
   double z_perm = 0.0;            // permanent spring set z_f [m]
-  double y_final = 0.0;           // dashpot displacement at the end [m]
-  double t_contact = 0.0;         // [s] (capture: time the capture criterion was met)
+  double y_final = 0.0;           // dashpot displacement at the end [m] (captured: m* v0/c)
+  double t_contact = 0.0;         // [s]; +inf when captured (the contact never ends)
+  double t_capture = 0.0;         // captured: when capture was established [s] (an "at
+                                  // capture" time, integrator-dependent); 0 otherwise
   double rebound_velocity = 0.0;  // alpha_dot at the end [m/s] (< 0: moving away); the
                                   // relative velocity when the target is a free sphere
   // Each body's velocity after the impact [m/s], in the frame where the target was at rest

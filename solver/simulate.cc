@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "scene/input_error.h"
+#include "solver/consistency.h"
 #include "solver/integrator_choice.h"
 #include "solver/integrator_instance.h"
 #include "solver/model_choice.h"
@@ -190,8 +191,10 @@ ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
                            std::vector<TrajectoryPoint>* trajectory) {
   ImpactResult r = dispatch(v, integrator, trajectory);
   // (an out-of-range kind was answered by dispatch with a failure; it has no name)
-  if (static_cast<std::size_t>(integrator) < integrator_table().size())
+  if (static_cast<std::size_t>(integrator) < integrator_table().size()) {
     r.integrator = to_string(integrator);
+    fail_non_finite_outcome(r, r.integrator);  // never a NaN beside a success status
+  }
   // A failure always says why: one that reached here without a reason is named as such.
   if (!r.ok() && r.reason.empty()) {
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;

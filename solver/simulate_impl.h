@@ -4,9 +4,11 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
+#include "solver/capture_end_state.h"
 #include "solver/impact_driver.h"
 #include "solver/impact_system.h"
 #include "solver/law_registry.h"
@@ -80,6 +82,14 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
     led.plastic_integrated = true;
   }
   led.residual = led.initial - led.final - led.stored - led.plastic - led.viscous;
+  // a captured impact reports where it ends, not the state when capture was declared
+  if (run.status == ImpactStatus::captured) {
+    const double m = momentum / V;
+    // m* omega/c = two_zeta with omega = 1/Ts, so c = m*/(two_zeta Ts)
+    const double c =
+        System::has_dashpot ? m / (sys.two_zeta * Ts) : std::numeric_limits<double>::infinity();
+    settle_captured(r, scene, {m, c, run.has_max_displacement});
+  }
   return r;
 }
 

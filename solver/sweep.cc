@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
@@ -68,6 +70,24 @@ SimulationRequest with_point(const SimulationRequest& base, double v0, double ze
 std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 0xcbf29ce484222325ULL) {
   for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ULL;
   return h;
+}
+
+// One journal line "index checksum row" (row without its newline): the index and the row
+// (newline restored) when the index is below `total` and the checksum matches; nullopt for a
+// line that was edited, cut short or is not a journal row.
+std::optional<std::pair<std::size_t, std::string>> parse_journal_line(const std::string& line,
+                                                                      std::size_t total) {
+  const std::size_t space = line.find(' ');
+  if (space == std::string::npos || space == 0 || space + 18 > line.size()) return std::nullopt;
+  if (line[space + 17] != ' ') return std::nullopt;
+  char* end = nullptr;
+  const unsigned long long index = std::strtoull(line.c_str(), &end, 10);
+  if (end != line.c_str() + space || index >= total) return std::nullopt;
+  const unsigned long long sum = std::strtoull(line.c_str() + space + 1, &end, 16);
+  if (end != line.c_str() + space + 17) return std::nullopt;
+  std::string row = line.substr(space + 18) + '\n';
+  if (fnv1a(row) != sum) return std::nullopt;
+  return std::make_pair(static_cast<std::size_t>(index), std::move(row));
 }
 
 // Field `name` of a row: its index is read off sweep_csv_header(), and the fields up to the
@@ -133,8 +153,28 @@ void validate(const SweepRequest& req) {
                        "this scene has none: use --zeta 0 (no dashpot)");
   // Every point is a valid request: each v0 and each zeta once (they enter separately); a
   // rate-dependent law with a dashpot is refused there, naming --zeta.
-  for (double v : req.velocities) validate(with_point(req.base, v, req.zetas.front()));
-  for (double z : req.zetas) validate(with_point(req.base, req.velocities.front(), z));
+  // The grid's values were typed as --v0 and --zeta, not as the scene's impact.velocity and
+  // damping.zeta: a point's error names the flag (issue 21 item 14: --v0 1e308).
+  auto as_flag = [](const InputError& e, const char* flag) {
+    const std::string what = e.what();
+    return InputError(flag, what.substr(std::min(what.size(), e.field().size() + 2)));
+  };
+  for (double v : req.velocities) {
+    try {
+      validate(with_point(req.base, v, req.zetas.front()));
+    } catch (const InputError& e) {
+      if (e.field() == "impact.velocity") throw as_flag(e, "--v0");
+      throw;
+    }
+  }
+  for (double z : req.zetas) {
+    try {
+      validate(with_point(req.base, req.velocities.front(), z));
+    } catch (const InputError& e) {
+      if (e.field() == "damping.zeta") throw as_flag(e, "--zeta");
+      throw;
+    }
+  }
 }
 
 ValidatedRequest ValidatedRequest::grid_point(const SweepRequest& /*grid: validated*/,
@@ -240,13 +280,16 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   if (fs::is_directory(csv, ec)) throw InputError("--out", csv.string() + " is a directory");
   const fs::path journal = journal_path();
   const fs::path partial = csv.string() + ".partial";
+  // what a run killed while committing left behind (its PID no longer runs)
+  remove_stale_temporaries(csv);
+  if (!options_.sidecar.empty()) remove_stale_temporaries(options_.sidecar);
 
   std::string fingerprint = options_.description + '\n' + sweep_csv_header();
   for (double v : request.velocities) fingerprint += exact(v) + ' ';
   fingerprint += '\n';
   for (double z : request.zetas) fingerprint += exact(z) + ' ';
   char journal_header[96];
-  std::snprintf(journal_header, sizeof journal_header, "ivv-sweep-journal 1 %016llx %zu",
+  std::snprintf(journal_header, sizeof journal_header, "ivv-sweep-journal 2 %016llx %zu",
                 static_cast<unsigned long long>(fnv1a(fingerprint)), total_);
 
   // A journal without a whole first line was cut off as it was created: it holds nothing.
@@ -260,59 +303,32 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
     throw InputError("--resume", journal.string() +
                                      " exists: an interrupted sweep left it. Add --resume to "
                                      "continue it, or delete it to start over");
-
-  // The partial CSV: the header and rows 0..k-1 in order (a torn last line is cut off).
-  std::size_t k = 0;
-  bool partial_ok = false;
-  if (options_.resume && have_journal && fs::exists(partial, ec)) {
-    std::ifstream in(partial, std::ios::binary);
-    std::string line;
-    std::uintmax_t valid = 0;
-    const std::string header = sweep_csv_header();
-    if (std::getline(in, line) && !in.eof() && line + '\n' == header) {
-      partial_ok = true;
-      valid = header.size();
-      while (k < total_ && std::getline(in, line) && !in.eof()) {
-        if (line.rfind(row_prefix(request, k), 0) != 0) break;
-        count(line);
-        valid += line.size() + 1;
-        ++k;
-      }
-    }
-    in.close();
-    if (partial_ok) fs::resize_file(partial, valid);
-  }
-  // The journal: every finished point as "index row"; rows >= k are read back.
+  std::ifstream journal_in;
+  std::uintmax_t valid = 0;
   if (options_.resume && have_journal) {
-    std::ifstream in(journal, std::ios::binary);
+    journal_in.open(journal, std::ios::binary);
     std::string line;
-    if (!std::getline(in, line) || in.eof() || line != journal_header)
+    if (!std::getline(journal_in, line) || journal_in.eof() || line != journal_header)
       throw InputError("--resume", journal.string() +
                                        " was written by another sweep (scene, law, integrator, "
-                                       "tolerances or grid differ): delete it or rerun that sweep");
-    std::uintmax_t valid = line.size() + 1;
-    while (std::getline(in, line) && !in.eof()) {
-      valid += line.size() + 1;
-      const std::size_t space = line.find(' ');
-      if (space == std::string::npos || space == 0) continue;  // unreadable: recompute it
-      char* end = nullptr;
-      const unsigned long long index = std::strtoull(line.c_str(), &end, 10);
-      if (end != line.c_str() + space || index >= total_ || index < k) continue;
-      std::string row = line.substr(space + 1) + '\n';
-      if (row.rfind(row_prefix(request, index), 0) != 0) continue;
-      if (pending_.emplace(index, std::move(row)).second) count(pending_[index]);
-    }
-    in.close();
-    fs::resize_file(journal, valid);  // drop a line torn by SIGKILL before appending
+                                       "tolerances or grid differ) or by another version of "
+                                       "ivv: delete it or rerun that sweep");
+    valid = line.size() + 1;
   }
-  resumed_ = k + pending_.size();
-  cursor_ = next_write_ = k;
-
-  partial_ = std::fopen(partial.c_str(), partial_ok ? "ab" : "wb");
+  // The partial CSV is rebuilt from the journal, whose rows carry checksums (issue 21 item 8:
+  // a partial row, like an unchecked journal row, could have been edited or cut short).
+  partial_ = std::fopen(partial.c_str(), "wb");
   if (!partial_)
     throw InputError("--out", "cannot write " + partial.string() + ": " + std::strerror(errno));
-  if (!partial_ok && std::fputs(sweep_csv_header().c_str(), partial_) < 0)
-    io_error(partial, std::strerror(errno));
+  if (std::fputs(sweep_csv_header().c_str(), partial_) < 0) io_error(partial, std::strerror(errno));
+  // The journal: every finished point as "index checksum row", the checksum FNV-1a of the row
+  // (with its newline). A row whose checksum, index or inputs do not match is not trusted: it
+  // is counted in damaged_rows() and its point computed again.
+  if (journal_in.is_open()) {
+    valid += read_journal_rows(journal_in, request);
+    journal_in.close();
+    fs::resize_file(journal, valid);  // drop a line torn by SIGKILL before appending
+  }
   journal_ = std::fopen(journal.c_str(), have_journal ? "ab" : "wb");
   if (!journal_)
     throw InputError("--out", "cannot write " + journal.string() + ": " + std::strerror(errno));
@@ -322,6 +338,25 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   std::lock_guard lock(mutex_);
   write_ready();
   cursor_ = next_write_;  // rows read back contiguously from k are written; hand out the rest
+}
+
+std::uintmax_t SweepSink::read_journal_rows(std::istream& in, const SweepRequest& request) {
+  std::uintmax_t whole = 0;  // bytes of whole lines
+  std::string line;
+  while (std::getline(in, line) && !in.eof()) {
+    whole += line.size() + 1;
+    std::optional<std::pair<std::size_t, std::string>> row = parse_journal_line(line, total_);
+    if (!row || row->second.rfind(row_prefix(request, row->first), 0) != 0) {
+      ++damaged_;
+      continue;
+    }
+    if (row->first < next_write_ || pending_.count(row->first)) continue;  // first one wins
+    count(row->second);
+    ++resumed_;
+    pending_.emplace(row->first, std::move(row->second));
+    write_ready();  // streams contiguous rows out: memory stays within the window
+  }
+  return whole;
 }
 
 SweepSink::~SweepSink() {
@@ -373,7 +408,8 @@ std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
 
 void SweepSink::record(std::size_t index, const std::string& row) {
   if (index < next_write_ || pending_.count(index)) return;  // delivered before: keep the first
-  if (std::fprintf(journal_, "%zu %s", index, row.c_str()) < 0)
+  if (std::fprintf(journal_, "%zu %016llx %s", index, static_cast<unsigned long long>(fnv1a(row)),
+                   row.c_str()) < 0)
     io_error(journal_path(), std::strerror(errno));
   count(row);
   ++delivered_;
@@ -403,6 +439,35 @@ void SweepSink::write_ready() {
     wrote = true;
   }
   if (wrote) written_cv_.notify_all();
+}
+
+bool SweepSink::finish_with_sidecar(
+    const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar) {
+  std::lock_guard lock(mutex_);
+  const fs::path partial = options_.csv.string() + ".partial";
+  if (next_write_ < total_) {
+    std::fflush(partial_);
+    std::fflush(journal_);
+    return false;
+  }
+  const int closed = std::fclose(partial_);
+  partial_ = nullptr;
+  if (closed != 0) io_error(partial, std::strerror(errno));
+  StagedFile csv(options_.csv, [&](std::ostream& out) {
+    std::ifstream in(partial, std::ios::binary);
+    out << in.rdbuf();
+  });
+  std::optional<StagedFile> sidecar;
+  if (!options_.sidecar.empty())
+    sidecar.emplace(options_.sidecar, [&](std::ostream& out) { write_sidecar(counts_, out); });
+  if (sidecar) fs::remove(sidecar->target());  // from here until its commit: no sidecar
+  csv.commit();
+  if (sidecar) sidecar->commit();
+  std::fclose(journal_);
+  journal_ = nullptr;
+  fs::remove(journal_path());  // first: a journal never outlives its partial CSV
+  fs::remove(partial);
+  return true;
 }
 
 bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_commit) {

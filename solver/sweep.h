@@ -14,9 +14,11 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <istream>
 #include <map>
 #include <mutex>
 #include <string>
@@ -93,15 +95,17 @@ struct SweepOutputOptions {
   std::string description;
   // Rows may complete at most this far ahead of the first unfinished one (memory bound).
   std::size_t window = 1 << 16;
+  // The JSON sidecar committed with the CSV by finish_with_sidecar(); empty: none.
+  std::filesystem::path sidecar = {};
 };
 
 // Journal, reorder window and partial CSV of one sweep. Thread-safe: any number of threads
 // take() work and deliver() rows.
 class SweepSink {
  public:
-  // Validates the request, then opens (or, with resume, reopens) the journal and the partial
-  // CSV. Throws InputError naming the flag: a bad grid, --out, or --resume (an existing
-  // journal without --resume, a journal of another sweep).
+  // Validates the request, then opens (or, with resume, reopens) the journal and rebuilds the
+  // partial CSV from the journal's checksummed rows. Throws InputError naming the flag: a bad grid,
+  // --out, or --resume (an existing journal without --resume, a journal of another sweep).
   SweepSink(const SweepRequest& request, SweepOutputOptions options);
   ~SweepSink();
   SweepSink(const SweepSink&) = delete;
@@ -109,7 +113,10 @@ class SweepSink {
 
   std::size_t total() const { return total_; }
   std::size_t resumed() const { return resumed_; }  // points read back from a previous run
-  std::size_t done() const;                         // resumed + delivered
+  // Journal lines not trusted on --resume (checksum, index or inputs do not match: edited or
+  // cut short); their points are computed again.
+  std::size_t damaged_rows() const { return damaged_; }
+  std::size_t done() const;  // resumed + delivered
   // Stop handing out work (a signal arrived). take() returns nothing from then on.
   void request_stop() { stop_ = true; }
   bool stop_requested() const { return stop_; }
@@ -130,6 +137,13 @@ class SweepSink {
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
   // --resume and returns false.
   bool finish(const std::function<void(const SweepCounts&)>& before_commit);
+  // finish(), committing the CSV and the sidecar (options.sidecar, filled by `write_sidecar`)
+  // as a pair (issue 21 item 9): both are written to temporaries first, then the old sidecar is
+  // removed, the CSV renamed into place and the sidecar last, so a reader (or a SIGKILL at any
+  // moment) never pairs a sidecar with a CSV it does not describe: at worst a CSV has no
+  // sidecar yet.
+  bool finish_with_sidecar(
+      const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar);
   const SweepCounts& counts() const { return counts_; }
   std::filesystem::path journal_path() const;
 
@@ -137,10 +151,14 @@ class SweepSink {
   void write_ready();                                      // caller holds mutex_
   void record(std::size_t index, const std::string& row);  // caller holds mutex_
   void count(const std::string& row);
+  // Reads the journal's rows after its header into pending_ (and the partial CSV); returns the
+  // bytes of its whole lines.
+  std::uintmax_t read_journal_rows(std::istream& in, const SweepRequest& request);
 
   SweepOutputOptions options_;
   std::size_t total_ = 0;
   std::size_t resumed_ = 0;
+  std::size_t damaged_ = 0;
   std::atomic<bool> stop_{false};
   mutable std::mutex mutex_;
   std::condition_variable written_cv_;

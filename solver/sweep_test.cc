@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -56,6 +59,13 @@ TEST(SweepValidate, NonFiniteOrNegativeValuesNameTheirFlag) {
   req = paper_grid(2, 2);
   req.zetas[1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(field_of(req), "--zeta");
+}
+
+// Issue 21 item 14: `sweep --v0 1e308` named impact.velocity, a field the user never typed.
+TEST(SweepValidate, OutOfRangeGridValueNamesTheFlagNotTheSceneField) {
+  SweepRequest req = paper_grid(2, 2);
+  req.velocities[1] = 1e308;
+  EXPECT_EQ(field_of(req), "--v0");
 }
 
 TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
@@ -150,6 +160,92 @@ TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
   EXPECT_EQ(computed, (std::vector<std::size_t>{6, 7, 8, 10, 11, 12, 13, 14}));
   ASSERT_TRUE(sink.finish({}));
   EXPECT_EQ(slurp(csv), expected);
+}
+
+// Issue 21 item 8: only the "v0,zeta," prefix of a journal row was checked, so a row whose e
+// or status was edited went into the final CSV, and a row cut short became a short CSV row;
+// the partial CSV was trusted the same way. Each journal row now carries a checksum: a row that
+// fails it is computed again, and the partial CSV is rebuilt from the journal.
+TEST(SweepSink, DamagedJournalRowIsRecomputedNotTrusted) {
+  SweepRequest req = paper_grid(5, 3);
+  const std::string expected = run_to_csv(req, scratch("whole-damaged.csv"), false);
+  const fs::path csv = scratch("damaged.csv");
+  {
+    SweepSink sink(req, {csv, false, "test"});
+    for (std::size_t i = 0; i < 10; ++i) sink.deliver(i, run_sweep_point(req, i));
+    EXPECT_FALSE(sink.finish({}));
+  }
+  const fs::path journal = csv.string() + ".journal";
+  const fs::path partial = csv.string() + ".partial";
+  std::string text = slurp(journal);
+  // line 2 (point 1): one digit of a result changed; line 4 (point 3): the status changed;
+  // line 6 (point 5): cut short, as a truncated line with its newline
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, next; at < text.size(); at = next + 1) {
+    next = text.find('\n', at);
+    lines.push_back(text.substr(at, next - at));
+  }
+  ASSERT_GE(lines.size(), 11u);
+  std::string& edited = lines[2];
+  const std::size_t digit =
+      edited.find_first_of("123456789", edited.find(',', edited.find(',') + 1));
+  edited[digit] = edited[digit] == '9' ? '8' : '9';
+  const std::size_t status = lines[4].find("separated");
+  ASSERT_NE(status, std::string::npos);
+  lines[4].replace(status, 9, "captured");
+  lines[6].resize(lines[6].size() / 2);
+  std::string damaged;
+  for (const std::string& l : lines) damaged += l + '\n';
+  { std::ofstream(journal, std::ios::binary | std::ios::trunc) << damaged; }
+  // and the partial CSV's first row edited: the journal is the record, not the partial
+  std::string csv_text = slurp(partial);
+  csv_text[csv_text.find('\n') + 1] = '7';
+  { std::ofstream(partial, std::ios::binary | std::ios::trunc) << csv_text; }
+
+  SweepSink sink(req, {csv, true, "test"});
+  EXPECT_EQ(sink.damaged_rows(), 3u);
+  EXPECT_EQ(sink.resumed(), 7u);
+  std::vector<std::size_t> computed;
+  for (auto chunk = sink.take(100, true); !chunk.empty(); chunk = sink.take(100, true))
+    for (std::size_t i : chunk) {
+      computed.push_back(i);
+      sink.deliver(i, run_sweep_point(req, i));
+    }
+  EXPECT_EQ(computed, (std::vector<std::size_t>{1, 3, 5, 10, 11, 12, 13, 14}));
+  ASSERT_TRUE(sink.finish({}));
+  EXPECT_EQ(slurp(csv), expected);
+}
+
+// Issue 21 item 9: the sidecar was written before the CSV was renamed into place, and a run
+// killed while copying left its temporary for ever. The pair is committed sidecar last, and a
+// dead process's temporary is removed by the next run on the same output.
+TEST(SweepSink, CsvAndSidecarCommittedAsAPairAndDeadTemporariesRemoved) {
+  SweepRequest req = paper_grid(2, 1);
+  const fs::path csv = scratch("pair.csv");
+  const fs::path json = scratch("pair.json");
+  pid_t child = fork();
+  if (child == 0) _exit(0);
+  ASSERT_GT(child, 0);
+  waitpid(child, nullptr, 0);  // reaped: its PID names no process now
+  const fs::path stale = scratch(".pair.csv.tmp" + std::to_string(child) + "-42");
+  const fs::path live = scratch(".pair.csv.tmp" + std::to_string(getpid() == 1 ? 2 : 1) + "-7");
+  { std::ofstream(stale) << "left by a killed run"; }
+  { std::ofstream(live) << "a running process's"; }
+  SweepOutputOptions opt{csv, false, "test"};
+  opt.sidecar = json;
+  SweepSink sink(req, opt);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));  // PID 1 runs: its temporary is not ours to remove
+  fs::remove(live);
+  run_sweep_points(req, sink, {});
+  ASSERT_TRUE(sink.finish_with_sidecar([](const SweepCounts& counts, std::ostream& out) {
+    out << "{\"separated\": " << counts.separated << "}\n";
+  }));
+  EXPECT_EQ(slurp(json), "{\"separated\": 2}\n");
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 3);  // header and two points
+  for (const auto& entry : fs::directory_iterator(csv.parent_path()))
+    EXPECT_EQ(entry.path().filename().string().find(".pair."), std::string::npos) << entry.path();
 }
 
 TEST(SweepSink, WindowBoundsHowFarAheadWorkIsHandedOut) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/input_error.h"
 #include "solver/law.h"
 #include "solver/simulate_law.h"
 #include "verification/conformance_law.h"
@@ -533,6 +534,12 @@ void dynamic_checks(const LawUnderTest& law, const Claims& claims, const Grid& g
       if (!c.expected || !c.e) continue;
       ++n;
       const double d = *c.e - *c.expected;
+      if (!std::isfinite(d)) {  // never a silent pass on a NaN (run_conformance refuses those)
+        miss = signed_miss = std::numeric_limits<double>::infinity();
+        at = "v0 = " + fmt(c.v0) + " m/s: delivered e = " + fmt(*c.e, 10) + ", expected " +
+             fmt(*c.expected, 10);
+        break;
+      }
       if (std::abs(d) >= miss)
         miss = std::abs(d), signed_miss = d,
         at = "v0 = " + fmt(c.v0) + " m/s: delivered e = " + fmt(*c.e, 10) + ", expected " +
@@ -644,8 +651,27 @@ nlohmann::json to_json(const Report& report) {
 Grid default_grid(const Scene& scene) {
   Grid g;
   g.scene = scene;
+  // a damping ratio is defined through the yield stiffness K_y (zeta = sqrt(m* K_y)/(2c)): a
+  // scene without a yield strength has none, and its default grid is undamped (issue 21 item
+  // 14: check-law on chung-ooi-1-glass blamed damping.zeta, which the user had not given)
+  if (!scene.yield_strength) g.zetas = {0.0};
   return g;
 }
+
+namespace {
+// A claimed COR is a number in [0, 1] at every velocity of the grid; anything else (0/0,
+// sqrt(-1), 1.5) is bad input, not a claim a check could pass (issue 21 item 3).
+void require_cor_claim_in_range(const Claims& claims, const std::vector<double>& velocities) {
+  if (!claims.expected_cor) return;
+  for (double v0 : velocities) {
+    const double e = claims.expected_cor(v0);
+    if (std::isfinite(e) && e >= 0.0 && e <= 1.0) continue;
+    throw InputError("--expect-cor", "'" + claims.expected_cor_text + "' evaluates to " + fmt(e) +
+                                         " at v0 = " + fmt(v0) +
+                                         " m/s; a COR is a finite number in [0, 1]");
+  }
+}
+}  // namespace
 
 Report run_conformance(const LawUnderTest& law, const Claims& claims, const Grid& given) {
   Grid grid = given;
@@ -656,6 +682,7 @@ Report run_conformance(const LawUnderTest& law, const Claims& claims, const Grid
   std::sort(grid.velocities.begin(), grid.velocities.end());
   if (grid.zetas.empty()) grid.zetas = {0.0};
   std::sort(grid.zetas.begin(), grid.zetas.end());
+  require_cor_claim_in_range(claims, grid.velocities);  // bad input before any run
   Report report;
   report.law = law.name;
   report.description = law.description;

@@ -82,7 +82,9 @@ struct Claims {
   bool cor_nonincreasing_in_v0 = true;
   bool cor_nonincreasing_in_damping = true;
   bool elastic_at_low_speed = false;
-  // The COR the law is meant to deliver at v0 (no dashpot), and how it was given.
+  // The COR the law is meant to deliver at v0 (no dashpot), and how it was given. It must be a
+  // finite number in [0, 1] at every grid velocity: run_conformance throws
+  // InputError("--expect-cor") before any run otherwise.
   std::function<double(double v0)> expected_cor;
   std::string expected_cor_text;
   // Allowed |e - expected|. Default: 1e-9, ten times the reference's error of e (mp50 ~1e-12
@@ -99,7 +101,8 @@ struct Grid {
   Scene scene;                     // materials, mass, radius; velocity and damping are set below
   std::vector<double> velocities;  // v0 [m/s]; empty: 7 points log-spaced over three decades,
                                    // 0.01 to 10 times the scene's v0
-  std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0)
+  std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0;
+                                           // default_grid of a scene without yield: only 0)
   IntegratorOptions options;               // of the integrators under comparison
   std::vector<IntegratorKind> integrators = {IntegratorKind::odeint_dopri5, IntegratorKind::dp45,
                                              IntegratorKind::gsl_rk8pd,

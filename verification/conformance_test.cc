@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "scene/input_error.h"
 #include "solver/laws/hertz.h"
 #include "verification/conformance_gtest.h"
 #include "verification/conformance_law.h"
@@ -41,6 +44,30 @@ TEST(Conformance, TheHertzLawPassesEveryCheck) {
   EXPECT_NO_THROW(check(r, "static.stiffness"));
   EXPECT_NE(check(r, "dynamic.integrators").detail.find("mp50"), std::string::npos);
   EXPECT_NEAR(check(r, "dynamic.expected_cor").measured, 0.0, 1e-7);
+}
+
+// Issue 21 item 3: a claimed COR of 0/0 passed "at no separated run"; sqrt(-1) the same.
+TEST(Conformance, ClaimThatIsNotAFiniteCorIsBadInput) {
+  for (double bad : {std::nan(""), 1.5, -0.1}) {
+    Claims claims;
+    claims.expected_cor = [bad](double) { return bad; };
+    claims.expected_cor_text = "bad";
+    try {
+      run_conformance(hertz(), claims, small_grid());
+      ADD_FAILURE() << "accepted the claim " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "--expect-cor");
+    }
+  }
+}
+
+// Issue 21 item 14: a scene without a yield strength has no damping ratio; its default grid
+// is undamped instead of failing on damping.zeta.
+TEST(Conformance, DefaultGridOfASceneWithoutYieldIsUndamped) {
+  Scene s = paper_scene();
+  s.yield_strength.reset();
+  EXPECT_EQ(default_grid(s).zetas, std::vector<double>{0.0});
+  EXPECT_EQ(default_grid(paper_scene()).zetas, (std::vector<double>{0.0, 0.1}));
 }
 
 // Hertz with a stiffness 1 % off: only the autodiff comparison can see it.

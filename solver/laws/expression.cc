@@ -2,6 +2,7 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cctype>
 #include <cmath>
@@ -31,6 +32,30 @@ int token_position(const std::string& text, const std::string& name) {
   return -1;
 }
 
+// Position of the first ',' outside parentheses in `text`, or -1.
+int top_level_comma(const std::string& text) {
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '(') ++depth;
+    if (text[i] == ')') --depth;
+    if (text[i] == ',' && depth <= 0) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// The names muParser itself defines (constants _pi, _e and the built-in functions): a --param
+// of that name would silently redefine them (issue 21 item 5: --param _pi=1).
+const std::set<std::string>& builtin_names() {
+  static const std::set<std::string> names = [] {
+    mu::Parser parser;
+    std::set<std::string> out;
+    for (const auto& [name, value] : parser.GetConst()) out.insert(name);
+    for (const auto& [name, callback] : parser.GetFunDef()) out.insert(name);
+    return out;
+  }();
+  return names;
+}
+
 // Thrown by the variable factory, which muParser calls for a name it does not know.
 struct UnknownName {
   std::string name;
@@ -54,10 +79,26 @@ bool setup_parser(mu::Parser& parser, const std::string& text, const std::string
     parser.SetExpr(text);
     parser.Eval();
   } catch (const UnknownName& u) {
+    const bool number = std::isdigit(static_cast<unsigned char>(u.name[0])) || u.name[0] == '.';
+    if (number)  // muParser hands a number it cannot represent (1e400) to the variable factory
+      throw ExpressionError(field, text, token_position(text, u.name),
+                            "the number '" + u.name +
+                                "' is outside the range of double (magnitudes 2.2e-308 to "
+                                "1.8e308)");
     throw ExpressionError(field, text, token_position(text, u.name),
                           "unknown variable '" + u.name + "' (known: " + known + ")");
   } catch (const mu::Parser::exception_type& e) {
-    throw ExpressionError(field, text, e.GetPos(), e.GetMsg());
+    const std::string what = e.GetMsg();
+    throw ExpressionError(field, text, e.GetPos(),
+                          what.find("Internal error") != std::string::npos
+                              ? "cannot be parsed here (muParser: " + what + ")"
+                              : what);
+  }
+  if (parser.GetNumResults() > 1) {
+    // muParser's comma operator: "K_h*z^1,5" is two expressions and only the last, 5, counts
+    throw ExpressionError(field, text, top_level_comma(text),
+                          "',' outside a function's arguments separates expressions, and only "
+                          "the last would count; write decimals with '.', e.g. z^1.5");
   }
   return parser.GetUsedVar().count(rate_variable) > 0;
 }
@@ -81,6 +122,10 @@ Constants scene_constants(const Scene& scene, const DerivedParameters& p,
     if (taken.count(name))
       throw InputError("--param " + name,
                        "'" + name + "' is already a variable or scene constant of expression laws");
+    if (builtin_names().count(name))
+      throw InputError("--param " + name, "'" + name +
+                                              "' is a built-in constant or function of the "
+                                              "expression language; choose another name");
     bool ident =
         !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
     for (char c : name) ident = ident && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
@@ -139,7 +184,8 @@ CompiledExpressions::CompiledExpressions(const ExpressionLawSpec& spec,
 CompiledExpressions::~CompiledExpressions() = default;
 
 double CompiledExpressions::evaluate(bool unload, double z, double zdot, double zmax) const {
-  if (z < 0) return evaluate(unload, 0.0, zdot, unload ? zmax : 0.0) + k_ref_ * z;
+  // below z = 0: continued from min(F(0), 0), so contact ends at z = 0 at the latest (header)
+  if (z < 0) return std::min(evaluate(unload, 0.0, zdot, unload ? zmax : 0.0), 0.0) + k_ref_ * z;
   Parsers& P = *parsers_;
   P.z = z;
   P.zdot = zdot;
@@ -223,6 +269,8 @@ std::function<double(double)> compile_cor_claim(const std::string& text,
   Constants constants = scene_constants(base, p, parameters, {"z", "zdot", "zmax"});
   std::erase_if(constants, [](const auto& c) { return c.first == "v0"; });
   claim->v0 = scene.velocity;
+  if (text.find_first_not_of(" \t") == std::string::npos)
+    throw InputError("--expect-cor", "the claimed COR is an empty expression; give e.g. '0.8'");
   setup_parser(claim->parser, text, "--expect-cor", {{"v0", &claim->v0}}, constants,
                known_names("v0", constants), "v0");
   return [claim](double v0) {
