@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "solver/format.h"
 #include "solver/integrator_choice.h"
 #include "solver/laws/hunt_crossley.h"
 #include "solver/model_choice.h"
@@ -10,11 +11,9 @@
 namespace ivv {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(3);
-  os << v;
-  return os.str();
+// Three significant digits: enough for a reason, short enough to read.
+std::string fmt3(double v) {
+  return fmt(v, 3);
 }
 
 }  // namespace
@@ -44,7 +43,7 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
       c.reasons.push_back(
           "events: onset, maximum compression (= maximum displacement) and separation; the "
           "yield event's time is not computed by the closed form (absent)");
-      c.reasons.push_back("estimated relative error: round-off (" + fmt(kEstimateClosedForm) +
+      c.reasons.push_back("estimated relative error: round-off (" + fmt3(kEstimateClosedForm) +
                           "); the contact time's quadrature within rtol/10");
       break;
     case ModelRoute::closed_form_hertz:
@@ -53,7 +52,8 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
       c.reasons.push_back(
           "hertz law without a dashpot: z_m = (5 m v0^2/(4 K_h))^(2/5), F_max = K_h z_m^1.5, "
           "t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 exactly (SPEC §2); no integration");
-      c.reasons.push_back("estimated relative error: round-off (" + fmt(kEstimateClosedForm) + ")");
+      c.reasons.push_back("estimated relative error: round-off (" + fmt3(kEstimateClosedForm) +
+                          ")");
       break;
     case ModelRoute::hunt_crossley_lambert_w: {
       c.law = "hunt-crossley: e by Lambert W, the rest integrated";
@@ -61,15 +61,15 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
       const double mu = HuntCrossleyLaw::make(req.parameters, p).mu;
       c.reasons.push_back(
           "hunt-crossley: e = [1 + W0(-(1 + u0) e^-(1 + u0))]/u0 exactly (u0 = mu v0 = " +
-          fmt(mu * req.scene.velocity) +
+          fmt3(mu * req.scene.velocity) +
           ", SPEC §2); F_max, t_f, z_max and the impulses have no closed form: integrated");
       integrator_words();
       if (r.separated())
-        c.reasons.push_back("the integrated Poisson COR " + fmt(r.e_poisson) +
-                            " against the exact e " + fmt(r.e) + ": difference " +
-                            fmt(std::abs(r.e_poisson - r.e)));
+        c.reasons.push_back("the integrated Poisson COR " + fmt3(r.e_poisson) +
+                            " against the exact e " + fmt3(r.e) + ": difference " +
+                            fmt3(std::abs(r.e_poisson - r.e)));
       c.reasons.push_back("estimated relative error of F_max, t_f: the integrator's, " +
-                          fmt(d.estimated_error) + "; e exact");
+                          fmt3(d.estimated_error) + "; e exact");
       break;
     }
     case ModelRoute::linearized_closed_form:
@@ -81,12 +81,12 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
             "closed_forms/linear_model.h); no integration");
       } else {
         c.reasons.push_back(
-            "elastoplastic law with a dashpot at rtol " + fmt(req.options.rtol) +
-            ": the linearized closed form's estimated error " + fmt(d.estimated_error) +
-            " = 2 (1 + 10 zeta) D0 with D0 = " + fmt(d.linear_difference) +
+            "elastoplastic law with a dashpot at rtol " + fmt3(req.options.rtol) +
+            ": the linearized closed form's estimated error " + fmt3(d.estimated_error) +
+            " = 2 (1 + 10 zeta) D0 with D0 = " + fmt3(d.linear_difference) +
             " (the exact undamped difference of the two laws in e, z_m, F_max, t_f) is within "
             "rtol; its unloading damping ratio zeta1 <= " +
-            fmt(kLinearMaxUnloadingDamping) + " (far from capture)");
+            fmt3(kLinearMaxUnloadingDamping) + " (far from capture)");
       }
       break;
     case ModelRoute::integrated:
@@ -98,11 +98,11 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
         std::string why = "elastoplastic with a dashpot: no exact closed form; ";
         if (d.linear_difference >= 0)
           why += "the linearized closed form's estimated error 2 (1 + 10 zeta) D0 = " +
-                 fmt(kLinearSafety * (1 + kLinearZetaGrowth * p.zeta) * d.linear_difference) +
-                 " (D0 = " + fmt(d.linear_difference) + ") exceeds rtol " + fmt(req.options.rtol) +
-                 " or its unloading is near capture";
+                 fmt3(kLinearSafety * (1 + kLinearZetaGrowth * p.zeta) * d.linear_difference) +
+                 " (D0 = " + fmt3(d.linear_difference) + ") exceeds rtol " +
+                 fmt3(req.options.rtol) + " or its unloading is near capture";
         else
-          why += "the linearized closed form is not within rtol " + fmt(req.options.rtol) +
+          why += "the linearized closed form is not within rtol " + fmt3(req.options.rtol) +
                  " (its undamped difference in e alone exceeds it) or is undefined here";
         c.reasons.push_back(why);
       } else if (req.law == LawKind::linearized) {
@@ -117,10 +117,10 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
           "capture, if any, by the driver's criterion: the rebound still "
           "attainable from the remaining energy, sqrt(w^2 + 2U), below "
           "capture_cor = " +
-          fmt(req.options.capture_cor));
+          fmt3(req.options.capture_cor));
       if (!req.auto_integrator)  // choose_integrator's reasons state it otherwise
-        c.reasons.push_back("estimated relative error of e, F_max, t_f: " + fmt(d.estimated_error) +
-                            " (the integrator's global error)");
+        c.reasons.push_back("estimated relative error of e, F_max, t_f: " +
+                            fmt3(d.estimated_error) + " (the integrator's global error)");
       break;
   }
   return c;

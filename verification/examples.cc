@@ -10,16 +10,11 @@
 #include "examples/laws/kuwabara_kono.h"
 #include "examples/laws/thornton.h"
 #include "oracles/published.h"
+#include "solver/format.h"
 #include "verification/conformance_law.h"
 
 namespace ivv::verification {
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 // Memoised by id; the first caller computes, concurrent callers wait for it.
 const ExampleRun& memoised(const std::string& id, const std::function<ExampleRun()>& compute) {

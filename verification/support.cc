@@ -165,10 +165,4 @@ Outcome worst_case(const WorstError& w, double tolerance, const std::string& wha
   return o;
 }
 
-std::string fmt(double v, int precision) {
-  std::ostringstream os;
-  os << std::setprecision(precision) << v;
-  return os.str();
-}
-
 }  // namespace ivv::verification

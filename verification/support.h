@@ -2,6 +2,8 @@
 // reference, and the bookkeeping of "largest error over a set of runs".
 #pragma once
 
+#include "solver/format.h"
+
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -64,6 +66,7 @@ class WorstError {
 // Outcome "largest relative error <= tolerance" with a standard detail sentence.
 Outcome worst_case(const WorstError& w, double tolerance, const std::string& what);
 
-std::string fmt(double v, int precision = 6);
+// Numbers in sentences: ivv::fmt(v, precision) of solver/format.h, the one formatter.
+using ivv::fmt;
 
 }  // namespace ivv::verification
