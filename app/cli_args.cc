@@ -1,7 +1,9 @@
 #include "app/cli_args.h"
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "scene/input_error.h"
@@ -10,17 +12,21 @@
 namespace ivv {
 
 double parse_number(const std::string& s, const std::string& field) {
-  std::size_t used = 0;
-  double v = 0;
-  // std::stod skips leading white space; a value with any is refused like trailing junk
+  // strtod skips leading white space; a value with any is refused like trailing junk
   const bool blank_start = !s.empty() && std::isspace(static_cast<unsigned char>(s.front()));
-  try {
-    if (!blank_start) v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
+  if (s.empty()) throw InputError(field, "an empty value is not a number");
+  char* end = nullptr;
+  errno = 0;
+  const double v = blank_start ? 0.0 : std::strtod(s.c_str(), &end);
+  const bool whole = !blank_start && end == s.c_str() + s.size() && end != s.c_str();
+  // out of range is named as such, not "not a finite number" (issue 21 item 14); a subnormal
+  // (1e-320) is a number like any other, and the field's own range check judges it
+  if (whole && errno == ERANGE && !(std::isfinite(v) && v != 0.0)) {
+    throw InputError(field, "'" + s + "' is " +
+                                (v != 0.0 ? "beyond the largest double, 1.8e308"
+                                          : "below the smallest positive double, 4.9e-324"));
   }
-  if (used == 0 || used != s.size() || !std::isfinite(v))
-    throw InputError(field, "'" + s + "' is not a finite number");
+  if (!whole || !std::isfinite(v)) throw InputError(field, "'" + s + "' is not a finite number");
   return v;
 }
 

@@ -412,4 +412,45 @@ TEST(Cli, FailedRunPrintsNullOutcome) {
   EXPECT_GT(j["result"]["steps"].get<long>(), 0);
 }
 
+// Issue 21 item 1 (its "done when"): the captured impact reports its end state, impulse
+// m v0 = 5 N s and final energy 0, with every integrator that runs the scene (rk4's fixed
+// step is not for a stiff dashpot) and with --integrator auto.
+TEST(Cli, CapturedImpactJsonReportsTheEndStateWithEveryIntegrator) {
+  for (const char* k : {"auto", "dop853", "rodas4", "odeint-rosenbrock4", "gsl-msbdf", "gsl-rk8pd",
+                        "odeint-dopri5", "dp45", "mp50"}) {
+    const CliRun r =
+        ivv(std::string("simulate --scene paper --v0 10 --zeta 2 --json --integrator ") + k);
+    ASSERT_EQ(r.exit_code, 0) << k << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out)["result"];
+    EXPECT_EQ(j["status"], "captured") << k;
+    EXPECT_NEAR(j["impulse"].get<double>(), 5.0, 5.0 * 1e-15) << k;  // m v0: a product
+    EXPECT_EQ(j["energy"]["final"].get<double>(), 0.0) << k;
+    EXPECT_EQ(j["energy"]["stored"].get<double>(), 0.0) << k;
+    EXPECT_TRUE(j["t_contact"].is_null()) << k;  // the contact never ends
+    EXPECT_GT(j["t_capture"].get<double>(), 0.0) << k;
+  }
+}
+
+// Issue 21 items 2, 3, 5, 10, 12: each command gave a wrong number with exit 0 (or ran before
+// failing); now a correct number, or bad input (exit 2) before any work.
+TEST(Cli, Issue21CommandsGiveANumberOrBadInput) {
+  const CliRun hc = ivv("simulate --scene paper --v0 1 --law hunt-crossley --hc-mu 1e-200 --json");
+  ASSERT_EQ(hc.exit_code, 0) << hc.err;
+  EXPECT_EQ(nlohmann::json::parse(hc.out)["result"]["e"].get<double>(), 1.0);
+  for (const char* bad :
+       {"simulate --scene paper --force 'K_h*z^1,5'",
+        "simulate --scene paper --force 'K_h*z^1.5' --param _pi=1",
+        "check-law --force 'K_h*z^1.5' --v0 1 --zeta 0 --expect-cor '0/0'",
+        "check-law --force 'K_h*z^1.5' --v0 1 --zeta 0 --expect-cor 'sqrt(-1)'",
+        "bench --gbench --benchmark_repetitions=-5", "bench --gbench --benchmark_min_time=nan",
+        "bench --gbench --benchmark_out=/nonexistent/x.json"}) {
+    const CliRun r = ivv(bad);
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.err;
+  }
+  // stdout is a pipe here (popen): refused before the sweep runs, and nothing left in /dev
+  const CliRun out = ivv("sweep --scene paper --v0 1:2:3 --zeta 0 --out /dev/stdout");
+  EXPECT_EQ(out.exit_code, 2) << out.err;
+  EXPECT_FALSE(std::filesystem::exists("/dev/stdout.journal"));
+}
+
 }  // namespace

@@ -76,11 +76,14 @@ fs::path write_law_report(const conformance::Report& report, const fs::path& dir
                            law_section_html(report, "law") +
                            "<p>Machine-readable: <a href=\"results.json\">results.json</a>.</p>";
   const fs::path index = dir / "index.html";
-  write_file_atomically(dir / "results.json", [&](std::ostream& out) {
+  // both written first, then renamed into place: an error in either leaves neither
+  StagedFile results(dir / "results.json", [&](std::ostream& out) {
     out << conformance::to_json(report).dump(2) << "\n";
   });
-  write_file_atomically(
-      index, [&](std::ostream& out) { out << page("ivv check-law: " + report.law, body); });
+  StagedFile html(index,
+                  [&](std::ostream& out) { out << page("ivv check-law: " + report.law, body); });
+  results.commit();
+  html.commit();
   return index;
 }
 

@@ -675,13 +675,18 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   const std::string html = page("ivv verification report", book.resolve(body));
 
   so.say("writing index.html, results.json, series.csv, junit.xml to " + opt.out_dir.string());
-  write_file_atomically(opt.out_dir / "results.json",
-                        [&](std::ostream& os) { os << results_json(records); });
-  write_file_atomically(opt.out_dir / "series.csv",
-                        [&](std::ostream& os) { os << series_csv(book.plots()); });
-  write_file_atomically(opt.out_dir / "junit.xml",
-                        [&](std::ostream& os) { os << junit_xml(records); });
-  write_file_atomically(opt.out_dir / "index.html", [&](std::ostream& os) { os << html; });
+  {
+    // all four written first, then renamed into place: a full disk or any write error leaves
+    // none of them (issue 21 item 13 found results.json without index.html)
+    StagedFile results(opt.out_dir / "results.json",
+                       [&](std::ostream& os) { os << results_json(records); });
+    StagedFile series(opt.out_dir / "series.csv",
+                      [&](std::ostream& os) { os << series_csv(book.plots()); });
+    StagedFile junit(opt.out_dir / "junit.xml",
+                     [&](std::ostream& os) { os << junit_xml(records); });
+    StagedFile index(opt.out_dir / "index.html", [&](std::ostream& os) { os << html; });
+    for (StagedFile* f : {&results, &series, &junit, &index}) f->commit();
+  }
 
   ReportSummary summary;
   summary.cases = records.size();

@@ -481,11 +481,15 @@ bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_com
   const int closed = std::fclose(partial_);
   partial_ = nullptr;
   if (closed != 0) io_error(partial, std::strerror(errno));
-  if (before_commit) before_commit(counts_);
-  write_file_atomically(options_.csv, [&](std::ostream& out) {
+  // the CSV is copied to its temporary first, so that between `before_commit` (the sidecar)
+  // and the CSV's rename there is one rename, not the copy of the whole file (issue 21 item 9;
+  // finish_with_sidecar closes that window too)
+  StagedFile csv(options_.csv, [&](std::ostream& out) {
     std::ifstream in(partial, std::ios::binary);
     out << in.rdbuf();
   });
+  if (before_commit) before_commit(counts_);
+  csv.commit();
   std::fclose(journal_);
   journal_ = nullptr;
   fs::remove(journal_path());  // first: a journal never outlives its partial CSV
