@@ -2,6 +2,7 @@
 // independent statement, Zener's sphere-on-plate problem (published values, small-lambda slope,
 // similarity, every integrator against the 50-digit reference over lambda 1e-3 ... 10) and the
 // paper's impactor on a T300/934 plate. Study: verification/study_structure.h.
+#include <algorithm>
 #include <cmath>
 
 #include "oracles/structure_impedance.h"
@@ -155,32 +156,48 @@ Outcome thickness_for_paper_zeta() {
                       " mm; zeta of that scene: " + fmt(st.zeta_at_that_thickness, 15));
 }
 
-// e rises with the thickness (c = 8 h^2 sqrt(rho D*/h^3) grows as h^2: less loss to the plate)
-// and falls with v0 (paper) at every thickness.
+// Where the plate lets the sphere rebound (e >= 1e-3 at both neighbours), e rises with the
+// thickness (c = 8 h^2 sqrt(rho D*/h^3) grows as h^2: less loss to the plate); at every
+// thickness e(5 m/s) <= e(1 m/s) (the paper: e falls with v0). Near capture (thin plates) e is
+// not monotone in h and is not judged on it: below the yield force (c v0 < K_h z_y^{3/2}) the
+// spring stays elastic and its slow relaxation gives a creep rebound of e ~ 1e-9 ... 1e-5;
+// once it yields (zeta ~ 1 ... 3 here) the permanent set and the overdamped unloading capture
+// the sphere exactly (e = 0). The rows in the detail show both.
 Outcome laminate_trend() {
+  constexpr double kRebound = 1e-3;  // a rebound, not a creep away from capture
   const StructureStudy& st = structure_study();
   int violations = 0;
   std::string where;
   for (std::size_t i = 0; i < st.thickness_rows.size(); ++i) {
     const ThicknessRow& r = st.thickness_rows[i];
-    if (!(r.e_5 < r.e_1)) {
+    if (r.e_5 > r.e_1) {
       ++violations;
-      where += " e(5 m/s) >= e(1 m/s) at h = " + fmt(r.thickness * 1e3) + " mm;";
+      where += " e(5 m/s) > e(1 m/s) at h = " + fmt(r.thickness * 1e3) + " mm;";
     }
-    if (i > 0 && (r.e_1 < st.thickness_rows[i - 1].e_1 || r.e_5 < st.thickness_rows[i - 1].e_5)) {
+    const ThicknessRow* prev = i > 0 ? &st.thickness_rows[i - 1] : nullptr;
+    const bool rebound = prev && prev->e_1 >= kRebound && r.e_1 >= kRebound;
+    if (rebound && r.e_1 < prev->e_1) {
       ++violations;
-      where += " e falls from h = " + fmt(st.thickness_rows[i - 1].thickness * 1e3) + " mm;";
+      where += " e(1 m/s) falls from h = " + fmt(prev->thickness * 1e3) + " mm;";
+    }
+    if (rebound && prev->e_5 >= kRebound && r.e_5 >= kRebound && r.e_5 < prev->e_5) {
+      ++violations;
+      where += " e(5 m/s) falls from h = " + fmt(prev->thickness * 1e3) + " mm;";
     }
   }
+  std::string table;
+  for (const ThicknessRow& r : st.thickness_rows)
+    table += " h " + fmt(r.thickness * 1e3, 4) + " mm zeta " + fmt(r.zeta, 4) + ": " +
+             fmt(r.e_1, 4) + " / " + fmt(r.e_5, 4) + ";";
   const ThicknessRow& thin = st.thickness_rows.front();
   const ThicknessRow& thick = st.thickness_rows.back();
   Outcome o = at_most(violations, 0,
                       "paper impactor, elastoplastic law, T300/934 plate dashpot: e at 1 / 5 m/s "
                       "from " +
-                          fmt(thin.e_1, 4) + " / " + fmt(thin.e_5, 4) +
-                          " (h = " + fmt(thin.thickness * 1e3) + " mm) to " + fmt(thick.e_1, 4) +
-                          " / " + fmt(thick.e_5, 4) + " (h = " + fmt(thick.thickness * 1e3) +
-                          " mm)" + (where.empty() ? std::string() : ";" + where));
+                          fmt(thin.e_1, 4) + " / " + fmt(thin.e_5, 4) + " (h = " +
+                          fmt(thin.thickness * 1e3) + " mm) to " + fmt(thick.e_1, 4) + " / " +
+                          fmt(thick.e_5, 4) + " (h = " + fmt(thick.thickness * 1e3) + " mm)" +
+                          (where.empty() ? std::string() : ";" + where) + " rows:" + table);
   return o;
 }
 
@@ -253,7 +270,7 @@ void register_structure_cases(Registry& reg) {
                  ". Near capture (lambda >= 5, e < 1e-4) e is compared in units of v0: the "
                  "integrator controls the rebound velocity relative to v0, so a relative error "
                  "of e there would magnify the same error 1e4 to 1e5 times",
-             true, [k, tol] { return zener_cross(k, tol.value); }});
+             false, [k, tol] { return zener_cross(k, tol.value); }});
   }
   reg.add({"structure.scenes", "shipped structure scenes hold the D* and mass they derive",
            Tier::analytic,
@@ -267,10 +284,11 @@ void register_structure_cases(Registry& reg) {
        "built at that h must give zeta = 0.1 to rounding (1e-12)",
        false, thickness_for_paper_zeta});
   reg.add({"structure.laminate.cor-thickness",
-           "paper impactor on a T300/934 plate: e rises with h and falls with v0",
+           "paper impactor on a T300/934 plate: e rises with h where it rebounds, falls with v0",
            Tier::published_trend,
-           "a strict ordering of runs at rtol 1e-10 (e to ~1e-8); neighbouring thicknesses differ "
-           "by 18% in h, their e by far more than that error",
+           "an ordering of runs at rtol 1e-10 (e to ~1e-8); where judged (e >= 1e-3) neighbouring "
+           "thicknesses differ by 18% in h and their e by far more than that error; near "
+           "capture e is not monotone in h (the detail's rows; see the comment)",
            false, laminate_trend});
 }
 

@@ -644,6 +644,11 @@ nlohmann::json to_json(const Report& report) {
 Grid default_grid(const Scene& scene) {
   Grid g;
   g.scene = scene;
+  // A scene whose dashpot comes from its [structure] (and that has a yield strength) is
+  // checked without a dashpot and with that dashpot: zeta = sqrt(m K_y)/(2 c) gives back the
+  // structure's c at every v0.
+  if (scene.damping.kind == Damping::Kind::structure && scene.yield_strength)
+    g.zetas = {0.0, derive(scene).zeta};
   return g;
 }
 

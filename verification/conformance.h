@@ -99,7 +99,9 @@ struct Grid {
   Scene scene;                     // materials, mass, radius; velocity and damping are set below
   std::vector<double> velocities;  // v0 [m/s]; empty: 7 points log-spaced over three decades,
                                    // 0.01 to 10 times the scene's v0
-  std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0)
+  std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0);
+                                           // default_grid(): {0, the scene's zeta} for a
+                                           // scene with a [structure] (and S_y)
   IntegratorOptions options;               // of the integrators under comparison
   std::vector<IntegratorKind> integrators = {IntegratorKind::odeint_dopri5, IntegratorKind::dp45,
                                              IntegratorKind::gsl_rk8pd,
