@@ -271,6 +271,37 @@ TEST(Cli, BadSceneFileNamesTheField) {
   EXPECT_NE(r.err.find("(-1, 0.5)"), std::string::npos) << r.err;
 }
 
+// A [structure] scene: simulate --json carries each element's dashpot, the series c and
+// Zener's lambda under "scene" (issue 18).
+TEST(Cli, StructureSceneReportsItsDashpotAndLambda) {
+  const CliRun r = ivv("simulate --scene steel-ball-on-steel-plate --law hertz --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto scene = nlohmann::json::parse(r.out)["scene"];
+  EXPECT_EQ(scene["dashpot_source"], "structure");
+  EXPECT_EQ(scene["structure"]["kind"], "plate");
+  EXPECT_NEAR(scene["structure"]["c_plate"].get<double>(), 393.0795, 1e-3);  // README value
+  EXPECT_TRUE(scene["structure"]["c_bar"].is_null());
+  EXPECT_EQ(scene["c"], scene["structure"]["c"]);
+  EXPECT_NEAR(scene["zener_lambda"].get<double>(), 0.97635, 1e-5);
+}
+
+// [structure] and [damping] together: exit 2, a message naming both, no output file.
+TEST(Cli, StructureAndDampingTogetherIsBadInput) {
+  const fs::path scene = scratch("both.toml");
+  std::ofstream(scene) << "[impactor]\nmass = 0.5\nradius = 0.01\nyoungs_modulus = 207e9\n"
+                          "poisson_ratio = 0.3\n[target]\nyoungs_modulus = 7.9e9\n"
+                          "poisson_ratio = 0.3\nyield_strength = 2e8\n[damping]\nzeta = 0.1\n"
+                          "[structure]\nkind = \"plate\"\nthickness = 0.01\ndensity = 1580\n"
+                          "[impact]\nvelocity = 1\n";
+  const fs::path traj = scratch("both-traj.csv");
+  fs::remove(traj);
+  const CliRun r = ivv("simulate --scene " + scene.string() + " --trajectory " + traj.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("structure"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[damping]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(traj));
+}
+
 TEST(Cli, EveryShippedSceneFileRuns) {
   int scenes = 0;
   for (const auto& entry : fs::directory_iterator(IVV_SCENES_DIR)) {

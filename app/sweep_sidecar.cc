@@ -41,7 +41,10 @@ nlohmann::json sweep_inputs_json(const SweepRequest& req, const GridSpec& v0,
        {{"order", "velocity-major: row = 1 + iv * zeta.count + iz"},
         {"points", point_count(req)},
         {"v0", grid_json(req.velocities, v0)},
-        {"zeta", grid_json(req.zetas, zeta)}}},
+        {"zeta", grid_json(req.zetas, zeta)},
+        // true: no zeta grid, every point keeps the scene's own dashpot ([structure], lambda
+        // or c); the zeta column is each point's derived zeta
+        {"scene_dashpot", req.scene_dashpot}}},
   };
   j["law_details"] = law_json(b);
   return j;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "scene/scene.h"
 #include "solver/model_choice.h"
@@ -14,6 +15,11 @@ namespace ivv {
 
 nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
 nlohmann::json result_json(const ImpactResult& r);
+// The [structure] of a scene: each element's dashpot, the series c, the formula; null without.
+nlohmann::json structure_json(const Scene& scene);
+// Lines for `scene show`: the structure's elements (c_i with formulas), then c, zeta (with a
+// yield strength) and Zener's lambda, each with the formula it came from.
+std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
 // {"scene": ..., "request": ..., "result": ...}
 // The law of a request: its summary, every parameter in use (defaults included) and, for an
 // expression law, its expressions and contact end.

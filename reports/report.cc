@@ -19,6 +19,7 @@
 #include "reports/provenance.h"
 #include "reports/restitution.h"
 #include "reports/speed_error.h"
+#include "reports/structure_section.h"
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
 #include "solver/parallel.h"
@@ -476,6 +477,16 @@ std::string restitution_html(const SectionOptions& so, FigureBook& book) {
   return out;
 }
 
+std::string structure_html(const SectionOptions& so, FigureBook& book) {
+  const StructureSection s = structure_section(so);
+  std::string out = s.intro_html;
+  out += book.add(s.figures.at(0));
+  out += "<h3>Similarity: four scenes at the same lambda</h3>\n" + s.similarity_table_html;
+  out += "<h3>The paper's impactor on a plate</h3>\n" + book.add(s.figures.at(1));
+  out += s.plate_properties_html;
+  return out;
+}
+
 std::string status_cell(const verification::HardCaseCell& c) {
   const ImpactResult& r = c.result;
   std::string s = "<b>" + escape(std::string(to_string(r.status))) + "</b>";
@@ -559,7 +570,7 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
 }
 
 std::string companions_html() {
-  return "<h2 id=\"companions\">8. Machine-readable companions</h2>\n"
+  return "<h2 id=\"companions\">9. Machine-readable companions</h2>\n"
          "<p>Beside this page, in the same directory:</p><ul>\n"
          "<li><a href=\"results.json\"><code>results.json</code></a>: "
          "<code>{\"cases\": [{\"id\", \"title\", \"tier\", \"passed\", \"measured\", "
@@ -638,6 +649,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   const std::string examples = section("contact-law worked examples", examples_html);
   const std::string cases = cases_html(records, book);
   const std::string speed = section("speed against error", speed_html);
+  const std::string structure = section("damping from the structure", structure_html);
   const std::string dem = section("DEM benchmark", [&](const SectionOptions&, FigureBook&) {
     return dem_benchmark_html(records);
   });
@@ -663,6 +675,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
       "<li><a href=\"#cases\">Every verification case</a></li>"
       "<li><a href=\"#speed\">Speed against error</a></li>"
       "<li><a href=\"#dem\">DEM benchmark: Chung &amp; Ooi (2011)</a></li>"
+      "<li><a href=\"#structure\">Damping from the structure</a></li>"
       "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
   body += summary_html(records, prov, opt, section_errors, stages);
   body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
@@ -671,6 +684,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   body += cases;
   body += "<h2 id=\"speed\">6. Speed against error</h2>\n" + speed;
   body += dem;
+  body += "<h2 id=\"structure\">8. Damping from the structure</h2>\n" + structure;
   body += companions_html();
   const std::string html = page("ivv verification report", book.resolve(body));
 

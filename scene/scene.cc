@@ -50,6 +50,22 @@ void validate_target(const Scene& s) {
 
 }  // namespace
 
+const char* damping_field(Damping::Kind kind) {
+  switch (kind) {
+    case Damping::Kind::none:
+      return "";
+    case Damping::Kind::ratio:
+      return "damping.zeta";
+    case Damping::Kind::coefficient:
+      return "damping.c";
+    case Damping::Kind::zener_lambda:
+      return "damping.lambda";
+    case Damping::Kind::structure:
+      return "structure";
+  }
+  return "";
+}
+
 void validate(const Scene& s) {
   require_positive_finite("impactor.mass", s.mass, "kg");
   require_positive_finite("impactor.radius", s.radius, "m");
@@ -66,6 +82,12 @@ void validate(const Scene& s) {
     case Damping::Kind::coefficient:
       require_positive_finite("damping.c", s.damping.value, "N s/m");
       break;
+    case Damping::Kind::zener_lambda:
+      require_positive_finite("damping.lambda", s.damping.value, "(dimensionless)");
+      break;
+    case Damping::Kind::structure:
+      validate_structure(s.damping.structure, s.target_youngs_modulus, s.target_poisson_ratio);
+      break;
   }
   validate_derived(s);
 }
@@ -76,7 +98,14 @@ void validate_derived(const Scene& s) {
     const char* field;
     double value, reference;
   };
-  const double damping_ref = s.damping.kind == Damping::Kind::ratio ? 0.1 : 11440.0;
+  // the damping input and its Table 1 value (lambda: the paper's c = 11440 N s/m at 1 m/s)
+  double damping_value = s.damping.value, damping_ref = 11440.0;
+  if (s.damping.kind == Damping::Kind::ratio) damping_ref = 0.1;
+  if (s.damping.kind == Damping::Kind::zener_lambda) damping_ref = 0.2398;
+  if (s.damping.kind == Damping::Kind::structure) {
+    damping_value =
+        structure_dashpot(s.damping.structure, s.target_youngs_modulus, s.target_poisson_ratio).c;
+  }
   const std::array<Input, 8> inputs = {{
       {"impactor.mass", s.mass, ref.mass},
       {"impactor.radius", s.radius, ref.radius},
@@ -88,8 +117,7 @@ void validate_derived(const Scene& s) {
       {"target.yield_strength", s.yield_strength.value_or(*ref.yield_strength),
        *ref.yield_strength},
       {"impact.velocity", s.velocity, ref.velocity},
-      {s.damping.kind == Damping::Kind::ratio ? "damping.zeta" : "damping.c", s.damping.value,
-       damping_ref},
+      {damping_field(s.damping.kind), damping_value, damping_ref},
       {"", 0.0, 1.0},
   }};
   // bit i of `depends` set: inputs[i] enters the quantity
@@ -117,6 +145,11 @@ void validate_derived(const Scene& s) {
   const DerivedParameters p = derive(s);
   check("E*", p.E_star, moduli);
   check("K_h", p.K_h, stiffness);
+  // a dashpot derived from lambda (m, K_h, v0) or from the structure (its own c) is checked
+  // whether or not a yield strength exists
+  if (s.damping.kind == Damping::Kind::zener_lambda)
+    check("c", p.c, stiffness | 0b0001 | 0b100000 | 0b1000000);
+  if (s.damping.kind == Damping::Kind::structure) check("c", p.c, 0b1000000);
   const bool yield_given = s.yield_strength.has_value();  // p.has_yield() is false for z_y = inf
   if (yield_given) {
     check("z_y", p.z_y, yield);
@@ -176,7 +209,17 @@ DerivedParameters derive(const Scene& s) {
       p.c = s.damping.value;
       p.zeta = critical / (2.0 * p.c);
       break;
+    case Damping::Kind::zener_lambda:
+      p.c = dashpot_for_zener_lambda(m, p.K_h, s.velocity, s.damping.value);
+      p.zeta = critical / (2.0 * p.c);
+      break;
+    case Damping::Kind::structure:
+      p.c =
+          structure_dashpot(s.damping.structure, s.target_youngs_modulus, s.target_poisson_ratio).c;
+      p.zeta = critical / (2.0 * p.c);
+      break;
   }
+  p.zener_lambda = zener_lambda(m, p.K_h, s.velocity, p.c);
   return p;
 }
 
@@ -227,15 +270,19 @@ Scene paper_scene() {
 
 namespace {
 
+std::string join(const std::set<std::string>& names) {
+  std::string list;
+  for (const auto& a : names) list += (list.empty() ? "" : ", ") + a;
+  return list;
+}
+
 void reject_unknown_keys(const toml::table& table, const std::string& prefix,
                          const std::set<std::string>& allowed) {
   for (const auto& [key, node] : table) {
     const std::string k(key.str());
     if (!allowed.count(k)) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
       throw InputError(prefix.empty() ? k : prefix + "." + k,
-                       "unknown key; accepted keys here: " + list);
+                       "unknown key; accepted keys here: " + join(allowed));
     }
   }
 }
@@ -310,6 +357,52 @@ std::string scene_name(const toml::table& root, const std::string& source_name) 
   return *name;
 }
 
+void parse_damping(const toml::table& d, Scene& s) {
+  reject_unknown_keys(d, "damping", {"zeta", "c", "lambda"});
+  const auto zeta = number(d, "damping", "zeta");
+  const auto c = number(d, "damping", "c");
+  const auto lambda = number(d, "damping", "lambda");
+  if ((zeta.has_value() + c.has_value() + lambda.has_value()) > 1)
+    throw InputError("damping", "give one of zeta, c or lambda, not more");
+  if (zeta) s.damping = Damping::ratio(*zeta);
+  if (c) s.damping = Damping::coefficient(*c);
+  if (lambda) s.damping = Damping::zener(*lambda);
+}
+
+// [structure]: the keys a kind uses (the others are bad input, not ignored).
+Structure parse_structure(const toml::table& t) {
+  const toml::node* kind_node = t.get("kind");
+  const auto kind_name = kind_node ? kind_node->value<std::string>() : std::nullopt;
+  const auto kind = kind_name ? structure_kind_from_name(*kind_name) : std::nullopt;
+  if (!kind) {
+    throw InputError("structure.kind",
+                     kind_node ? "unknown kind; accepted: \"plate\", \"bar\", \"plate+bar\""
+                               : "missing; accepted: \"plate\", \"bar\", \"plate+bar\"");
+  }
+  std::set<std::string> keys = {"kind", "density", "youngs_modulus"};
+  if (*kind != Structure::Kind::bar)
+    keys.insert({"thickness", "bending_stiffness", "poisson_ratio"});
+  if (*kind != Structure::Kind::plate) keys.insert("area");
+  for (const auto& [key, node] : t) {
+    const std::string k(key.str());
+    if (keys.count(k)) continue;
+    static const std::set<std::string> known = {"thickness", "bending_stiffness", "poisson_ratio",
+                                                "area"};
+    if (!known.count(k)) reject_unknown_keys(t, "structure", keys);
+    throw InputError("structure." + k, "not used by kind = \"" + *kind_name +
+                                           "\"; accepted keys for it: " + join(keys));
+  }
+  Structure st;
+  st.kind = *kind;
+  st.density = required_number(t, "structure", "density");
+  if (st.has_plate()) st.thickness = required_number(t, "structure", "thickness");
+  if (st.has_bar()) st.area = required_number(t, "structure", "area");
+  st.bending_stiffness = number(t, "structure", "bending_stiffness");
+  st.youngs_modulus = number(t, "structure", "youngs_modulus");
+  st.poisson_ratio = number(t, "structure", "poisson_ratio");
+  return st;
+}
+
 }  // namespace
 
 Scene parse_scene_toml(const std::string& text, const std::string& source_name) {
@@ -322,7 +415,7 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name) 
        << err.source().begin.column << ": " << err.description();
     throw InputError(source_name, os.str());
   }
-  reject_unknown_keys(root, "", {"name", "impactor", "target", "damping", "impact"});
+  reject_unknown_keys(root, "", {"name", "impactor", "target", "damping", "structure", "impact"});
 
   Scene s;
   s.name = scene_name(root, source_name);
@@ -336,15 +429,23 @@ Scene parse_scene_toml(const std::string& text, const std::string& source_name) 
 
   parse_target(require_table(root, "target"), s);
 
+  if (root.contains("structure") && root.contains("damping")) {
+    throw InputError("structure",
+                     "and [damping] both given: the dashpot comes either from the "
+                     "struck structure ([structure]) or from [damping] (zeta, c or "
+                     "lambda), not both");
+  }
   if (const toml::table* d = root["damping"].as_table()) {
-    reject_unknown_keys(*d, "damping", {"zeta", "c"});
-    const auto zeta = number(*d, "damping", "zeta");
-    const auto c = number(*d, "damping", "c");
-    if (zeta && c) throw InputError("damping", "give one of zeta or c, not both");
-    if (zeta) s.damping = Damping::ratio(*zeta);
-    if (c) s.damping = Damping::coefficient(*c);
+    parse_damping(*d, s);
   } else if (root.contains("damping")) {
-    throw InputError("damping", "must be a table [damping] with zeta or c");
+    throw InputError("damping", "must be a table [damping] with zeta, c or lambda");
+  }
+  if (const toml::table* st = root["structure"].as_table()) {
+    s.damping = Damping::from_structure(parse_structure(*st));
+  } else if (root.contains("structure")) {
+    throw InputError("structure",
+                     "must be a table [structure] with kind = \"plate\", \"bar\" "
+                     "or \"plate+bar\"");
   }
 
   const toml::table& impact = require_table(root, "impact");

@@ -20,6 +20,7 @@
 //   omega0 = sqrt(K_y/m*)                                [rad/s]
 //   zeta  = sqrt(m* K_y) / (2 c)                         [-]        (c = inf <=> zeta = 0)
 //   v_y   = sqrt(4 K_h z_y^{5/2} / (5 m*))               [m/s]      undamped yield velocity
+//   lambda = m*^{3/5} K_h^{2/5} v0^{1/5} / c              [-]        Zener 1941 (structure.h)
 // z_y, K_y, omega0, v_y and zeta exist only when S_y is given (NaN otherwise; has_yield()).
 //
 // Normalisation (`Scales`), chosen by the contact law (ScaleBasis):
@@ -38,19 +39,31 @@
 #include <vector>
 
 #include "scene/data_dir.h"
+#include "scene/structure.h"
 
 namespace ivv {
 
-// The dashpot of the scene: absent (c = inf), given as a damping ratio, or as a coefficient.
+// The dashpot of the scene: absent (c = inf), given as a damping ratio, as a coefficient, as
+// Zener's parameter lambda (scene/structure.h: c = m^{3/5} K_h^{2/5} v0^{1/5}/lambda, so c
+// follows v0), or derived from the struck structure (a [structure] section: plate, bar, or
+// both in series; scene/structure.h).
 struct Damping {
-  enum class Kind { none, ratio, coefficient };
+  enum class Kind { none, ratio, coefficient, zener_lambda, structure };
   Kind kind = Kind::none;
-  double value = 0.0;  // zeta [-] for ratio, c [N s/m] for coefficient
+  double value = 0.0;   // zeta [-] for ratio, c [N s/m] for coefficient, lambda [-] for
+                        // zener_lambda; unused for structure
+  Structure structure;  // for Kind::structure
 
   static Damping none() { return {}; }
-  static Damping ratio(double zeta) { return {Kind::ratio, zeta}; }
-  static Damping coefficient(double c) { return {Kind::coefficient, c}; }
+  static Damping ratio(double zeta) { return {Kind::ratio, zeta, {}}; }
+  static Damping coefficient(double c) { return {Kind::coefficient, c, {}}; }
+  static Damping zener(double lambda) { return {Kind::zener_lambda, lambda, {}}; }
+  static Damping from_structure(const Structure& s) { return {Kind::structure, 0.0, s}; }
 };
+
+// Where a dashpot came from, as the user typed it: "damping.zeta", "damping.c",
+// "damping.lambda", "structure" ("" for none). Names the field in messages.
+const char* damping_field(Damping::Kind kind);
 
 struct Scene {
   std::string name = "custom";
@@ -92,6 +105,7 @@ struct DerivedParameters {
   double zeta = 0.0;                                   // damping ratio [-]; 0 without a dashpot
   double c = std::numeric_limits<double>::infinity();  // dashpot [N s/m]; inf without one
   double v_yield = absent;                             // undamped yield velocity [m/s]
+  double zener_lambda = 0.0;  // m*^{3/5} K_h^{2/5} v0^{1/5}/c [-] (Zener 1941); 0 without a dashpot
   bool has_dashpot() const { return c < std::numeric_limits<double>::infinity(); }
   bool has_yield() const { return std::isfinite(z_y); }
 };

@@ -204,6 +204,71 @@ INSTANTIATE_TEST_SUITE_P(
                  "target.poisson_ratio"}),
     [](const auto& info) { return std::string(info.param.label); });
 
+// [structure] in place of [damping]: the dashpot derived from the struck structure.
+std::string with_structure(const std::string& body) {
+  return replace(kGoodScene, "[damping]\nzeta = 0.1\n", "[structure]\n" + body);
+}
+
+TEST(SceneParser, StructurePlateGivesItsDashpot) {
+  const Scene s = parse_scene_toml(
+      with_structure("kind = \"plate\"\nthickness = 0.002\ndensity = 7850\nyoungs_modulus = "
+                     "207e9\npoisson_ratio = 0.3\n"),
+      "plate.toml");
+  ASSERT_EQ(s.damping.kind, Damping::Kind::structure);
+  EXPECT_EQ(s.damping.structure.kind, Structure::Kind::plate);
+  const DerivedParameters p = derive(s);
+  // 1e-14: a few operations of rounding (the formulas' own tests hold them to this)
+  EXPECT_NEAR(p.c / plate_dashpot(7850, 0.002, plate_bending_stiffness(207e9, 0.3, 0.002)), 1.0,
+              1e-14);
+  EXPECT_NEAR(p.zeta, std::sqrt(s.mass * p.K_y) / (2.0 * p.c), 1e-14 * p.zeta);
+  EXPECT_NEAR(p.zener_lambda, zener_lambda(s.mass, p.K_h, s.velocity, p.c), 1e-14);
+}
+
+TEST(SceneParser, DampingLambdaGivesZenerDashpot) {
+  const Scene s = parse_scene_toml(replace(kGoodScene, "zeta = 0.1", "lambda = 0.5"), "l.toml");
+  ASSERT_EQ(s.damping.kind, Damping::Kind::zener_lambda);
+  EXPECT_NEAR(derive(s).zener_lambda, 0.5, 1e-14);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Structure, SceneParserBad,
+    ::testing::Values(
+        BadScene{"structure_and_damping",
+                 kGoodScene + std::string("[structure]\nkind = \"bar\"\narea = 1\ndensity = 1\n"),
+                 "structure"},
+        BadScene{"unknown_kind", with_structure("kind = \"shell\"\ndensity = 7850\n"),
+                 "structure.kind"},
+        BadScene{"missing_kind", with_structure("density = 7850\n"), "structure.kind"},
+        BadScene{"zero_thickness",
+                 with_structure("kind = \"plate\"\nthickness = 0\ndensity = 7850\n"),
+                 "structure.thickness"},
+        BadScene{"negative_density",
+                 with_structure("kind = \"plate\"\nthickness = 0.002\ndensity = -7850\n"),
+                 "structure.density"},
+        BadScene{"zero_area", with_structure("kind = \"bar\"\narea = 0\ndensity = 7850\n"),
+                 "structure.area"},
+        BadScene{"plate_poisson_half",
+                 with_structure(
+                     "kind = \"plate\"\nthickness = 0.002\ndensity = 7850\npoisson_ratio = 0.5\n"),
+                 "structure.poisson_ratio"},
+        BadScene{"bending_stiffness_with_bar",
+                 with_structure("kind = \"bar\"\narea = 1e-4\ndensity = 7850\n"
+                                "bending_stiffness = 10\n"),
+                 "structure.bending_stiffness"},
+        BadScene{"plate_missing_thickness", with_structure("kind = \"plate\"\ndensity = 7850\n"),
+                 "structure.thickness"},
+        BadScene{"plate_area",
+                 with_structure("kind = \"plate\"\nthickness = 0.002\n"
+                                "density = 7850\narea = 1e-4\n"),
+                 "structure.area"},
+        BadScene{"unknown_structure_key",
+                 with_structure("kind = \"plate\"\nthickness = 0.002\ndensity = 7850\nwidth = 1\n"),
+                 "structure.width"},
+        BadScene{"zero_lambda", replace(kGoodScene, "zeta = 0.1", "lambda = 0"), "damping.lambda"},
+        BadScene{"lambda_and_zeta", replace(kGoodScene, "zeta = 0.1", "zeta = 0.1\nlambda = 1"),
+                 "damping"}),
+    [](const auto& info) { return std::string(info.param.label); });
+
 TEST(SceneParser, MissingFileIsInputError) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
 }

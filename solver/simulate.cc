@@ -128,7 +128,10 @@ ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req
   }
   if (rate_dependent && req.scene.damping.kind != Damping::Kind::none) {
     throw InputError(
-        req.scene.damping.kind == Damping::Kind::ratio ? "--zeta" : "--c",
+        req.scene.damping.kind == Damping::Kind::ratio          ? "--zeta"
+        : req.scene.damping.kind == Damping::Kind::zener_lambda ? "--lambda"
+        : req.scene.damping.kind == Damping::Kind::structure    ? "structure"
+                                                                : "--c",
         std::string(req.law == LawKind::expression ? "an expression that uses zdot"
                                                    : "the " + std::string(law.name) + " law") +
             " carries its own damping and runs without the series dashpot");

@@ -47,16 +47,30 @@ std::string exact(double x) {
   return fmt(x, kInputDigits);
 }
 
+// Points per velocity: the zeta grid, or 1 when every point keeps the scene's own dashpot.
+std::size_t zeta_count(const SweepRequest& req) {
+  return req.scene_dashpot ? 1 : req.zetas.size();
+}
+
+// The zeta of point `index`: the grid's, or the derived zeta of the scene's own dashpot.
+double point_zeta(const SweepRequest& req, std::size_t index) {
+  if (!req.scene_dashpot) return req.zetas[index % req.zetas.size()];
+  Scene s = req.base.scene;
+  s.velocity = req.velocities[index];
+  return derive(s).zeta;
+}
+
 // "v0,zeta," of a point: the start of its row, used to check rows read back from disk.
 std::string row_prefix(const SweepRequest& req, std::size_t index) {
-  const std::size_t nz = req.zetas.size();
-  return exact(req.velocities[index / nz]) + ',' + exact(req.zetas[index % nz]) + ',';
+  return exact(req.velocities[index / zeta_count(req)]) + ',' + exact(point_zeta(req, index)) + ',';
 }
 
 std::string point_label(const SweepRequest& req, std::size_t index) {
-  const std::size_t nz = req.zetas.size();
-  return "sweep point " + std::to_string(index) + " (--v0 " + exact(req.velocities[index / nz]) +
-         " --zeta " + exact(req.zetas[index % nz]) + ")";
+  return "sweep point " + std::to_string(index) + " (--v0 " +
+         exact(req.velocities[index / zeta_count(req)]) +
+         (req.scene_dashpot ? std::string(", the scene's dashpot")
+                            : " --zeta " + exact(point_zeta(req, index))) +
+         ")";
 }
 
 SimulationRequest with_point(const SimulationRequest& base, double v0, double zeta) {
@@ -121,17 +135,42 @@ std::string_view field_of(std::string_view row, int field) {
 // ---- validation ----------------------------------------------------------------------------
 
 std::size_t point_count(const SweepRequest& req) {
-  return req.velocities.size() * req.zetas.size();
+  return req.velocities.size() * zeta_count(req);
 }
 
 SimulationRequest point_request(const SweepRequest& req, std::size_t index) {
+  if (req.scene_dashpot) {
+    SimulationRequest r = req.base;
+    r.scene.velocity = req.velocities[index];
+    return r;
+  }
   const std::size_t nz = req.zetas.size();
   return with_point(req.base, req.velocities[index / nz], req.zetas[index % nz]);
 }
 
+namespace {
+// A sweep that keeps the scene's own dashpot: no zeta grid, a dashpot to keep, each v0 valid.
+void validate_scene_dashpot(const SweepRequest& req) {
+  if (!req.zetas.empty())
+    throw InputError("--zeta", "give either a zeta grid or keep the scene's own dashpot, not both");
+  if (static_cast<double>(req.velocities.size()) > kMaxSweepPoints)
+    throw InputError("--v0", "the grid has more than 1e8 points (split the study)");
+  if (req.base.scene.damping.kind == Damping::Kind::none)
+    throw InputError("--zeta", "missing: the scene has no dashpot of its own to keep");
+  for (double v : req.velocities) {
+    if (!(std::isfinite(v) && v > 0))
+      throw InputError("--v0", "velocities must be finite and > 0 m/s, got " + exact(v));
+    SimulationRequest r = req.base;
+    r.scene.velocity = v;
+    validate(r);
+  }
+}
+}  // namespace
+
 void validate(const SweepRequest& req) {
   validate_threads(req.threads);
   if (req.velocities.empty()) throw InputError("--v0", "the velocity grid is empty");
+  if (req.scene_dashpot) return validate_scene_dashpot(req);
   if (req.zetas.empty()) throw InputError("--zeta", "the damping grid is empty");
   const double points =
       static_cast<double>(req.velocities.size()) * static_cast<double>(req.zetas.size());
@@ -232,7 +271,7 @@ std::string sweep_csv_row(double v0, double zeta, const ImpactResult& r) {
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
   const SimulationRequest r = point_request(req, index);
   try {
-    return sweep_csv_row(r.scene.velocity, req.zetas[index % req.zetas.size()],
+    return sweep_csv_row(r.scene.velocity, point_zeta(req, index),
                          simulate(ValidatedRequest::grid_point(req, r)));
   } catch (const std::exception& e) {
     throw std::runtime_error(point_label(req, index) + ": " + e.what());
@@ -243,7 +282,7 @@ std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
 
 std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   validate(req);
-  const std::size_t nz = req.zetas.size();
+  const std::size_t nz = zeta_count(req);
   std::vector<SweepPoint> points(point_count(req));
   ParallelOptions opt;
   opt.threads = req.threads;
@@ -251,7 +290,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   try {
     parallel_for(points.size(), opt, [&](std::size_t i) {
       points[i].v0 = req.velocities[i / nz];
-      points[i].zeta = req.zetas[i % nz];
+      points[i].zeta = point_zeta(req, i);
       try {
         const SimulationRequest point = point_request(req, i);
         points[i].result = simulate(ValidatedRequest::grid_point(req, point));
@@ -288,6 +327,7 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   for (double v : request.velocities) fingerprint += exact(v) + ' ';
   fingerprint += '\n';
   for (double z : request.zetas) fingerprint += exact(z) + ' ';
+  if (request.scene_dashpot) fingerprint += "the scene's dashpot";
   char journal_header[96];
   std::snprintf(journal_header, sizeof journal_header, "ivv-sweep-journal 2 %016llx %zu",
                 static_cast<unsigned long long>(fnv1a(fingerprint)), total_);

@@ -33,7 +33,11 @@ struct SweepRequest {
   SimulationRequest base;          // scene, law, integrator and options shared by every point
   std::vector<double> velocities;  // v0 [m/s]
   std::vector<double> zetas;       // damping ratios; 0 means no dashpot
-  int threads = 0;                 // 0: all hardware threads
+  // Every point keeps the base scene's own dashpot (a [structure], lambda or c) instead of a
+  // zeta of the grid: `zetas` must then be empty, the grid is velocities x 1, and the zeta
+  // column of a row is the point's derived zeta (nan without a yield strength).
+  bool scene_dashpot = false;
+  int threads = 0;  // 0: all hardware threads
   // run_sweep only: called from worker threads (serialised) after each point: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -52,6 +52,37 @@ TEST(SweepValidate, HugeGridIsRefusedBeforeAnythingIsAllocated) {
   EXPECT_THROW(run_sweep(req), InputError);
 }
 
+// A sweep that keeps the scene's own dashpot (a [structure]): one point per v0, each run with
+// the structure's c, the zeta column the derived zeta of that c.
+TEST(SweepSceneDashpot, KeepsTheStructureDashpot) {
+  SweepRequest req;
+  req.base.scene = load_scene("paper");
+  Structure plate;
+  plate.density = 1580.0;
+  plate.thickness = 0.02;
+  plate.bending_stiffness = 4.036e9 * 0.02 * 0.02 * 0.02;
+  req.base.scene.damping = Damping::from_structure(plate);
+  req.velocities = {0.5, 2.0};
+  req.scene_dashpot = true;
+  EXPECT_EQ(field_of(req), "");
+  ASSERT_EQ(point_count(req), 2u);
+  const double c = structure_dashpot(plate, 7.9e9, 0.3).c;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const SimulationRequest r = point_request(req, i);
+    EXPECT_EQ(r.scene.velocity, req.velocities[i]);
+    EXPECT_EQ(derive(r.scene).c, c);
+  }
+  const auto points = run_sweep(req);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].zeta, derive(req.base.scene).zeta);
+  EXPECT_LT(points[1].result.e, points[0].result.e);  // e falls with v0 at fixed c (paper)
+  req.zetas = {0.1};
+  EXPECT_EQ(field_of(req), "--zeta");  // both a grid and the scene's dashpot
+  req.zetas.clear();
+  req.base.scene.damping = Damping::none();
+  EXPECT_EQ(field_of(req), "--zeta");  // no dashpot to keep
+}
+
 TEST(SweepValidate, NonFiniteOrNegativeValuesNameTheirFlag) {
   SweepRequest req = paper_grid(2, 2);
   req.velocities[1] = -1.0;

@@ -655,6 +655,11 @@ Grid default_grid(const Scene& scene) {
   // scene without a yield strength has none, and its default grid is undamped (issue 21 item
   // 14: check-law on chung-ooi-1-glass blamed damping.zeta, which the user had not given)
   if (!scene.yield_strength) g.zetas = {0.0};
+  // A scene whose dashpot comes from its [structure] (and that has a yield strength) is
+  // checked without a dashpot and with that dashpot: zeta = sqrt(m K_y)/(2 c) gives back the
+  // structure's c at every v0.
+  if (scene.damping.kind == Damping::Kind::structure && scene.yield_strength)
+    g.zetas = {0.0, derive(scene).zeta};
   return g;
 }
 

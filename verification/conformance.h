@@ -102,7 +102,9 @@ struct Grid {
   std::vector<double> velocities;  // v0 [m/s]; empty: 7 points log-spaced over three decades,
                                    // 0.01 to 10 times the scene's v0
   std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0;
-                                           // default_grid of a scene without yield: only 0)
+                                           // default_grid of a scene without yield: only 0;
+                                           // of a scene with a [structure] (and S_y): {0, the
+                                           // scene's zeta})
   IntegratorOptions options;               // of the integrators under comparison
   std::vector<IntegratorKind> integrators = {IntegratorKind::odeint_dopri5, IntegratorKind::dp45,
                                              IntegratorKind::gsl_rk8pd,

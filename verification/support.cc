@@ -94,6 +94,12 @@ std::string key(const SimulationRequest& r) {
      << r.scene.damping.value << ' ' << r.scene.velocity << ' ' << static_cast<int>(r.law) << ' '
      << parameters_key(r.parameters) << ' ' << r.expression.force << ' ' << r.expression.unload
      << ' ' << r.expression.allow_tension;
+  if (r.scene.damping.kind == Damping::Kind::structure) {  // the structure's inputs, all of them
+    const Structure& st = r.scene.damping.structure;
+    os << ' ' << static_cast<int>(st.kind) << ' ' << st.density << ' ' << st.thickness << ' '
+       << st.area << ' ' << st.bending_stiffness.value_or(-1) << ' '
+       << st.youngs_modulus.value_or(-1) << ' ' << st.poisson_ratio.value_or(-1);
+  }
   return os.str();
 }
 }  // namespace

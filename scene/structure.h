@@ -1,0 +1,124 @@
+// The dashpot from the struck structure (paper, after eq. 4) and Zener's inelasticity parameter.
+//
+// A sphere striking a large structure loses energy to the waves it sends away: the force at the
+// contact point is proportional to the velocity there, F = c ẏ, with c the structure's
+// driving-point impedance (a real number for these two idealised structures):
+//
+//   infinite thin plate, transverse (bending) waves:
+//     c_plate = 8 sqrt(rho h D*)                                            [N s/m]
+//     D = E h^3 / (12 (1 - nu^2))  (isotropic plate; a laminate gives its effective D*) [N m]
+//     (L. Cremer, M. Heckl, B. A. T. Petersson, Structure-Borne Sound, 3rd ed., Springer 2005:
+//      driving-point impedance of an infinite thin plate, Z = 8 sqrt(B' m''), B' = D the
+//      bending stiffness, m'' = rho h the mass per unit area; Zener 1941 used the same.)
+//   semi-infinite bar, axial waves (force at its end):
+//     c_bar = A sqrt(E rho) = rho A c_L,  c_L = sqrt(E/rho)                  [N s/m]
+//     (e.g. K. F. Graff, Wave Motion in Elastic Solids, 1975, ch. 2: the d'Alembert wave
+//      F = rho A c_L v travelling into the bar.)
+//   plate and bar both excited: the two dashpots in series, 1/c = 1/c_plate + 1/c_bar.
+//
+// Laminates: for a specially orthotropic plate (D16 = D26 = 0) the effective bending stiffness
+// used for impact is D* = sqrt(D11 D22 (A + 1)/2), A = (D12 + 2 D66)/sqrt(D11 D22)
+// (R. Olsson, "Mass criterion for wave controlled impact response of composite plates",
+// Composites Part A 31 (2000) 879-887). laminate_bending_stiffness() computes D11, D22, D12,
+// D66 of a cross-ply stack by classical lamination theory (e.g. R. M. Jones, Mechanics of
+// Composite Materials, 2nd ed. 1999, §4.2: D_ij = sum_k Qbar_ij (z_k^3 - z_{k-1}^3)/3).
+//
+// Zener's parameter (C. Zener, "The intrinsic inelasticity of large plates", Phys. Rev. 59
+// (1941) 669-673): for the Hertz law K_h z^{3/2} in series with the dashpot c, the impact has
+// one dimensionless group
+//     lambda = m^{3/5} K_h^{2/5} v0^{1/5} / c                               [-]
+// With z* = (m v0^2/K_h)^{2/5} [m], sigma = z/z*, tau = t v0/z*, the impactor displacement
+// a = alpha/z*, the equations m alpha'' = -F, c y' = F become a'' = -sigma^{3/2},
+// y' = lambda sigma^{3/2}: e depends on lambda alone (SPEC §1).
+//
+// Units: SI throughout (m, kg, Pa, N m, N s/m).
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ivv {
+
+// The struck structure of a scene ([structure] in a scene file).
+struct Structure {
+  enum class Kind { plate, bar, plate_and_bar };
+  Kind kind = Kind::plate;
+  double density = 0.0;                     // rho [kg/m^3]
+  double thickness = 0.0;                   // h [m] (plate)
+  double area = 0.0;                        // A [m^2] (bar)
+  std::optional<double> bending_stiffness;  // D* [N m] (plate); absent: E h^3/(12 (1 - nu^2))
+  std::optional<double> youngs_modulus;     // E [Pa] of the structure; absent: the target's
+  std::optional<double> poisson_ratio;      // nu [-] of the plate; absent: the target's
+
+  bool has_plate() const { return kind != Kind::bar; }
+  bool has_bar() const { return kind != Kind::plate; }
+};
+
+// "plate", "bar", "plate+bar" (the scene file's spelling).
+std::string_view structure_kind_name(Structure::Kind kind);
+std::optional<Structure::Kind> structure_kind_from_name(std::string_view name);
+
+// The dashpot of a structure, element by element. An element the structure does not have has
+// c_i = inf (no dashpot in series).
+struct StructureDashpot {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  double bending_stiffness = std::numeric_limits<double>::quiet_NaN();  // D used [N m] (plate)
+  bool bending_stiffness_given = false;  // D* from the scene (else E h^3/(12(1 - nu^2)))
+  double c_plate = inf;                  // 8 sqrt(rho h D) [N s/m]
+  double c_bar = inf;                    // A sqrt(E rho) [N s/m]
+  double c = inf;                        // series: 1/c = 1/c_plate + 1/c_bar [N s/m]
+};
+
+// Formulas of the header, each alone.
+double plate_bending_stiffness(double youngs_modulus, double poisson_ratio, double thickness);
+double plate_dashpot(double density, double thickness, double bending_stiffness);
+double bar_dashpot(double area, double youngs_modulus, double density);
+double series_dashpot(double c1, double c2);  // 1/(1/c1 + 1/c2); inf is no dashpot
+
+// Throws InputError naming the [structure] field at fault and its accepted range: density,
+// thickness, area, bending_stiffness, youngs_modulus, poisson_ratio (-1 < nu < 0.5), and a
+// material the formulas need but cannot have (a rigid target gives no E for the structure).
+// target_E, target_nu: the scene's target (E may be +inf: rigid).
+void validate_structure(const Structure& s, double target_E, double target_nu);
+
+// The dashpot of a valid structure (validate_structure first).
+StructureDashpot structure_dashpot(const Structure& s, double target_E, double target_nu);
+
+// One-line formulas for a human reader (scene show), e.g. "c_plate = 8 sqrt(rho h D)".
+std::string structure_formula(const Structure& s);
+
+// Zener's lambda = m^{3/5} K_h^{2/5} v0^{1/5} / c (0 when c = inf), and the c that gives a
+// requested lambda: c = m^{3/5} K_h^{2/5} v0^{1/5} / lambda.
+double zener_lambda(double mass, double K_h, double v0, double c);
+double dashpot_for_zener_lambda(double mass, double K_h, double v0, double lambda);
+// Zener's length z* = (m v0^2/K_h)^{2/5} [m] (the Hertz maximum compression is
+// (5/4)^{2/5} z*); time z*/v0 and force K_h z*^{3/2} follow.
+double zener_length(double mass, double K_h, double v0);
+
+// The thickness h [m] at which a plate of bending stiffness D = d3 h^3 (d3 [N/m^2]: E/(12(1 -
+// nu^2)) for an isotropic plate, D*/h^3 of a laminate of fixed stacking) and density rho has
+// the dashpot c: c = 8 sqrt(rho h d3 h^3) = 8 h^2 sqrt(rho d3), so h = sqrt(c/(8 sqrt(rho d3))).
+double plate_thickness_for_dashpot(double c, double density, double d3);
+
+// A ply of a laminate: orthotropic, in its own axes (1 along the fibres).
+struct Ply {
+  double E1 = 0.0;    // [Pa]
+  double E2 = 0.0;    // [Pa]
+  double G12 = 0.0;   // [Pa]
+  double nu12 = 0.0;  // [-]
+};
+
+// Bending stiffnesses of a laminate of equal-thickness plies (angles 0 or 90 degrees only, so
+// that D16 = D26 = 0), listed from one face to the other; total thickness h [m].
+struct LaminateBending {
+  double D11 = 0.0, D22 = 0.0, D12 = 0.0, D66 = 0.0;  // [N m]
+  double D_star = 0.0;                                // Olsson's sqrt(D11 D22 (A + 1)/2) [N m]
+};
+// Throws std::invalid_argument for an angle other than 0 or 90, an empty stack, h <= 0.
+LaminateBending laminate_bending_stiffness(const Ply& ply, const std::vector<int>& angles_deg,
+                                           double thickness);
+
+}  // namespace ivv
