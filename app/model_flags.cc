@@ -24,9 +24,13 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
     auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
     auto* c = cmd.add_option("--c", f.c, "dashpot coefficient [N s/m]");
+    auto* l = cmd.add_option("--lambda", f.lambda,
+                             "Zener's lambda = m*^(3/5) K_h^(2/5) v0^(1/5) / c: the dashpot that "
+                             "gives it at this v0");
     auto* n = cmd.add_flag("--no-dashpot", f.no_dashpot, "ignore the scene's dashpot");
-    z->excludes(c)->excludes(n);
-    c->excludes(n);
+    z->excludes(c)->excludes(l)->excludes(n);
+    c->excludes(l)->excludes(n);
+    l->excludes(n);
   }
   auto* law = cmd.add_option("--law", f.law, "contact law (see `ivv laws`)")->capture_default_str();
   auto* force = cmd.add_option(
@@ -71,6 +75,7 @@ RequestOptions to_options(const ModelFlags& f) {
   o.v0 = number(f.v0, "--v0");
   o.zeta = number(f.zeta, "--zeta");
   o.c = number(f.c, "--c");
+  o.lambda = number(f.lambda, "--lambda");
   o.no_dashpot = f.no_dashpot;
   o.law = f.law;
   o.expression = {f.force, f.unload, f.allow_tension};

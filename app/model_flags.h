@@ -16,7 +16,7 @@ namespace ivv::app {
 
 struct ModelFlags {
   std::string scene;
-  std::optional<std::string> v0, zeta, c;
+  std::optional<std::string> v0, zeta, c, lambda;
   bool no_dashpot = false;
   std::string law = "elastoplastic";
   std::string integrator = "auto";

@@ -66,8 +66,9 @@ int run_sweep(const ModelFlags& f, const SweepFlags& sf, const std::string& comm
   std::string start_error;
   if (writer) {
     try {
-      sink = std::make_unique<SweepSink>(req,
-                                         SweepOutputOptions{sf.out_path, sf.resume, inputs.dump()});
+      SweepOutputOptions out{sf.out_path, sf.resume, inputs.dump()};
+      out.sidecar = sidecar_path(sf.out_path);  // committed with the CSV, never without it
+      sink = std::make_unique<SweepSink>(req, std::move(out));
     } catch (const InputError& e) {
       start_code = kExitBadInput;
       start_error = e.what();
@@ -84,6 +85,9 @@ int run_sweep(const ModelFlags& f, const SweepFlags& sf, const std::string& comm
   if (writer && sink->resumed() > 0)
     std::cerr << "ivv sweep: resuming: " << sink->resumed() << " of " << sink->total()
               << " points read back from " << sink->journal_path().string() << "\n";
+  if (writer && sink->damaged_rows() > 0)
+    std::cerr << "ivv sweep: " << sink->damaged_rows()
+              << " journal rows failed their checksum and are computed again\n";
 
   ProgressLine progress("ivv sweep", writer ? sink->resumed() : 0);
   SweepRunOptions run;
@@ -105,11 +109,10 @@ int run_sweep(const ModelFlags& f, const SweepFlags& sf, const std::string& comm
   }
   progress.finish();
 
-  const bool complete = sink->finish([&](const SweepCounts& counts) {
-    const nlohmann::json sidecar = sweep_sidecar_json(inputs, counts, sf.out_path, command);
-    write_file_atomically(sidecar_path(sf.out_path),
-                          [&](std::ostream& out) { out << sidecar.dump(2) << "\n"; });
-  });
+  const bool complete =
+      sink->finish_with_sidecar([&](const SweepCounts& counts, std::ostream& out) {
+        out << sweep_sidecar_json(inputs, counts, sf.out_path, command).dump(2) << "\n";
+      });
   if (!complete) {
     std::cerr << "ivv sweep: interrupted: " << sink->done() << " of " << sink->total()
               << " points done and kept in " << sink->journal_path().string()

@@ -16,7 +16,12 @@ void outcome_lines(std::ostream& out, const SimulationRequest& req, const Impact
   out << "  (Poisson " << r.e_poisson << ", energetic " << r.e_energetic << ")\n";
   out << std::setprecision(6);
   out << "  peak force   F_max = " << r.F_max << " N at t = " << r.t_F_max * 1e3 << " ms\n";
-  out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
+  if (r.status == ImpactStatus::captured)
+    out << "  contact      never ends (captured: the impactor comes to rest on the target; "
+           "capture established at t = "
+        << r.t_capture * 1e3 << " ms)\n";
+  else
+    out << "  contact      t_contact = " << r.t_contact * 1e3 << " ms\n";
   out << "  deformation  z_max = " << r.z_max * 1e3 << " mm, alpha_max = " << r.alpha_max * 1e3
       << " mm, z_perm = " << r.z_perm * 1e3 << " mm\n";
   out << "  energy [J]   initial " << r.energy.initial << " = final " << r.energy.final
@@ -51,6 +56,8 @@ std::string impact_summary(const SimulationRun& run) {
     out << "c = " << p.c << " N s/m\n";
   else
     out << "no dashpot\n";
+  if (p.has_dashpot() && req.law == LawKind::hertz)
+    out << "  Zener's lambda = m*^(3/5) K_h^(2/5) v0^(1/5) / c = " << p.zener_lambda << "\n";
   out << "  status       " << to_string(r.status);
   if (!r.reason.empty()) out << ": " << r.reason;
   out << "\n";
@@ -59,6 +66,26 @@ std::string impact_summary(const SimulationRun& run) {
     out << "  model        " << run.choice->brief() << "; --model full to integrate always\n";
   return out.str();
 }
+
+namespace {
+
+// The dashpot of a [structure]: each element's c with the formula it came from, and the series.
+std::string structure_lines(const Scene& s) {
+  const Structure& st = s.damping.structure;
+  const StructureDashpot d = structure_dashpot(st, s.target_youngs_modulus, s.target_poisson_ratio);
+  std::ostringstream out;
+  out << std::setprecision(6) << "structure (" << structure_kind_name(st.kind)
+      << "): " << structure_formula(st) << "\n";
+  if (st.has_plate())
+    out << "  c_plate = " << d.c_plate << " N s/m   (8 sqrt(rho h D), D = " << d.bending_stiffness
+        << " N m" << (d.bending_stiffness_given ? ", given" : ", E h^3/(12 (1 - nu^2))") << ")\n";
+  if (st.has_bar()) out << "  c_bar   = " << d.c_bar << " N s/m   (A sqrt(E rho))\n";
+  if (st.has_plate() && st.has_bar())
+    out << "  c       = " << d.c << " N s/m   (in series: 1/c = 1/c_plate + 1/c_bar)\n";
+  return out.str();
+}
+
+}  // namespace
 
 std::string scene_summary(const Scene& s) {
   const DerivedParameters p = derive(s);
@@ -93,12 +120,17 @@ std::string scene_summary(const Scene& s) {
         << "  omega0 = " << p.omega0 << " rad/s\n"
         << "  v_y    = " << p.v_yield << " m/s\n";
   }
+  if (s.damping.kind == Damping::Kind::structure) out << structure_lines(s);
   if (p.has_dashpot() && p.has_yield())
-    out << "  zeta   = " << p.zeta << ", c = " << p.c << " N s/m\n";
+    out << "  zeta   = " << p.zeta << ", c = " << p.c << " N s/m"
+        << "   (zeta = sqrt(m* K_y)/(2 c))\n";
   else if (p.has_dashpot())
     out << "  c      = " << p.c << " N s/m\n";
   else
     out << "  no dashpot (c = inf, zeta = 0)\n";
+  if (p.has_dashpot())
+    out << "  lambda = " << p.zener_lambda
+        << "   (Zener: m*^(3/5) K_h^(2/5) v0^(1/5) / c; Hertz law with this dashpot)\n";
   return out.str();
 }
 

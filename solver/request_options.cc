@@ -22,6 +22,7 @@ void apply_scene_overrides(const RequestOptions& o, Scene& scene) {
   if (o.v0) scene.velocity = *o.v0;
   if (o.zeta) scene.damping = Damping::ratio(*o.zeta);
   if (o.c) scene.damping = Damping::coefficient(*o.c);
+  if (o.lambda) scene.damping = Damping::zener(*o.lambda);
   if (o.no_dashpot) scene.damping = Damping::none();
 }
 
@@ -67,9 +68,10 @@ SimulationRequest to_request(const RequestOptions& o) {
   apply_scene_overrides(o, req.scene);
   apply_law(o, req);
   apply_integration(o, req);
-  const std::array<Override, 5> overrides = {{{"impact.velocity", "--v0", o.v0.has_value()},
+  const std::array<Override, 6> overrides = {{{"impact.velocity", "--v0", o.v0.has_value()},
                                               {"damping.zeta", "--zeta", o.zeta.has_value()},
                                               {"damping.c", "--c", o.c.has_value()},
+                                              {"damping.lambda", "--lambda", o.lambda.has_value()},
                                               {"--param K", "--hc-k", o.hc_k.has_value()},
                                               {"--param mu", "--hc-mu", o.hc_mu.has_value()}}};
   try {

@@ -8,6 +8,7 @@
 //                              resolved), the result and, where a choice was made, its reasons
 //
 // Field names: an override is named by the command-line flag that sets it (--v0, --zeta, --c,
+// --lambda,
 // --hc-k, --hc-mu, --rtol, --atol, --dt, --max-steps), and a scene value the user overrode is
 // reported under that name rather than the scene file's key, since the flag is what they typed.
 // Every range is checked once, by the validation the override feeds (scene.cc, law_registry.cc,
@@ -28,6 +29,7 @@ struct RequestOptions {
   std::optional<double> v0;           // [m/s] replaces [impact] velocity
   std::optional<double> zeta;         // [-] replaces [damping] with this damping ratio
   std::optional<double> c;            // [N s/m] replaces [damping] with this coefficient
+  std::optional<double> lambda;       // [-] replaces [damping] with the c of this Zener lambda
   bool no_dashpot = false;            // drops the scene's dashpot
   std::string law = "elastoplastic";  // a registered law's name (ivv laws)
   ExpressionLawSpec expression;       // a non-empty force: the expression law instead of `law`
