@@ -28,9 +28,9 @@ std::string law_section_html(const conformance::Report& report, const std::strin
   }
   html += table({"check", "verdict", "measured", "reference", "tolerance", "what was measured"},
                 rows, table_source);
-  if (!report.not_applicable.empty()) {
-    html += "<p>Not applicable to this law:</p>\n<ul>\n";
-    for (const auto& [id, why] : report.not_applicable)
+  if (!report.skipped.empty()) {
+    html += "<p>Skipped (not applicable to this law, or not claimed):</p>\n<ul>\n";
+    for (const auto& [id, why] : report.skipped)
       html += "<li><code>" + escape(id) + "</code>: " + escape(why) + "</li>\n";
     html += "</ul>\n";
   }
