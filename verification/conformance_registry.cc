@@ -52,6 +52,7 @@ LawUnderTest registry_law(const SimulationRequest& request) {
     SimulationRequest r = base;
     r.scene = s;
     r.integrator = k;
+    r.auto_integrator = false;  // this integrator, not the one --integrator auto would pick
     r.model = ModelKind::full;  // the law integrated: the checks judge the integrators on it
     r.options = o;
     return ivv::simulate(r);
@@ -60,6 +61,7 @@ LawUnderTest registry_law(const SimulationRequest& request) {
     SimulationRequest r = base;
     r.scene = s;
     r.integrator = IntegratorKind::dp45;
+    r.auto_integrator = false;
     r.model = ModelKind::full;
     r.options = o;
     std::vector<TrajectoryPoint> points;
