@@ -3,7 +3,8 @@
 #   config files and data into WORK_DIR/prefix (a fresh directory), 3. configure
 #   examples/downstream/ with only that prefix to find ivv by, 4. build it, 5. run its program
 #   on the paper scene and on a shipped scene by name (the installed data, IVV_DATA_DIR unset), 6. run its
-#   conformance tests.
+#   conformance tests (one ctest test: the battery once), 7. copy the installed examples/laws/,
+#   build it and run its check.
 foreach(var IVV_SOURCE_DIR IVV_BINARY_DIR WORK_DIR GENERATOR CXX_COMPILER)
   if(NOT ${var})
     message(FATAL_ERROR "downstream test: ${var} not given")
@@ -55,3 +56,14 @@ step("run restitution" ${build}/restitution)
 step("run restitution on an installed scene" ${build}/restitution steel-on-aluminium)
 step("run the conformance suite" ${CMAKE_CTEST_COMMAND} --test-dir ${build} -j 2
      --output-on-failure)
+
+# 7. the installed example laws: copy share/ivv/examples/laws as a user would, configure, build
+#    and run it (Thornton's law through every conformance check).
+set(laws_copy ${WORK_DIR}/my-law)
+file(REMOVE_RECURSE ${laws_copy})
+file(COPY ${prefix}/share/ivv/examples/laws/ DESTINATION ${laws_copy})
+list(TRANSFORM configure_args REPLACE "^${IVV_SOURCE_DIR}/examples/downstream$" "${laws_copy}")
+list(TRANSFORM configure_args REPLACE "^${build}$" "${WORK_DIR}/build-my-law")
+step("configure the installed examples/laws" ${CMAKE_COMMAND} ${configure_args})
+step("build the installed examples/laws" ${CMAKE_COMMAND} --build ${WORK_DIR}/build-my-law -j 2)
+step("run check_thornton" ${WORK_DIR}/build-my-law/check_thornton)

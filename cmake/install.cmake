@@ -4,6 +4,8 @@
 #   include/ivv/{scene,closed_forms,solver,oracles,verification}/...   (#include "solver/law.h", as in the tree)
 #   lib/libivv_*.a, lib/cmake/ivv/ivvConfig.cmake, ivvConfigVersion.cmake, ivvTargets.cmake
 #   share/ivv/*.csv, *.md, generate_*.py, scenes/*.toml   (scene/data_dir.h finds them)
+#   include/ivv/examples/laws/*.h, share/ivv/examples/laws/ (the example laws, and a CMake
+#   project that checks one: copy it for a law of your own)
 # Components: ivv_development (libraries, headers, CMake files) and ivv_data; the ivv program
 # (app/) installs as the default component.
 include(GNUInstallDirs)
@@ -52,9 +54,18 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scene ${PROJECT_SOURCE_DIR}/closed_forms
 install(FILES ${PROJECT_SOURCE_DIR}/verification/conformance.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_law.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_gtest.h
+              ${PROJECT_SOURCE_DIR}/verification/continuity_scan.h
               ${PROJECT_SOURCE_DIR}/verification/plot_data.h
               ${PROJECT_SOURCE_DIR}/verification/tolerances.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ivv/verification COMPONENT ivv_development)
+
+# The example laws: their headers beside ivv's (#include "examples/laws/thornton.h"), and the
+# directory itself, with a CMake project a user can copy, in share/ivv/examples/laws.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/laws
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ivv/examples COMPONENT ivv_development
+        FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/laws
+        DESTINATION ${IVV_INSTALL_DATADIR}/examples COMPONENT ivv_development)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/reference_data/ DESTINATION ${IVV_INSTALL_DATADIR}
         COMPONENT ivv_data FILES_MATCHING PATTERN "*.csv" PATTERN "*.md" PATTERN "*.py" PATTERN "*.toml")

@@ -1,6 +1,7 @@
 #include "oracles/published.h"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "scene/input_error.h"
@@ -43,6 +44,12 @@ double kuwabara_kono_series(double v_star) {
   require(std::isfinite(v_star) && v_star >= 0.0, "v_star", ">= 0 and finite", v_star);
   const double s2 = v_star * v_star;
   return 1.0 - 1.15344 * s2 + 0.79826 * s2 * s2;
+}
+
+double tsuji_beta(double e) {
+  require(std::isfinite(e) && e > 0.0 && e <= 1.0, "e", "in (0, 1]", e);
+  const double l = std::log(e);
+  return l / std::sqrt(l * l + std::numbers::pi * std::numbers::pi);
 }
 
 double kuwabara_kono_pade(double v) {

@@ -43,4 +43,11 @@ double kuwabara_kono_series(double v_star);
 // Pade form, as a function of v* >= 0.
 double kuwabara_kono_pade(double v_star);
 
+// Tsuji-type Hertz damping as DEM codes use it (LIGGGHTS `model hertz`; Tsuji, Tanaka & Ishida,
+// Powder Technol. 71 (1992) 239): F = K_h z^{3/2} + gamma_n dz/dt with
+// gamma_n = -2 sqrt(5/6) beta sqrt(S_n m), S_n = 2 E* sqrt(R z), and for a target COR e_t in
+// (0, 1]: beta = ln e_t / sqrt(ln^2 e_t + pi^2) (<= 0; 0 for e_t = 1). Throws ivv::InputError
+// outside (0, 1].
+double tsuji_beta(double e_target);
+
 }  // namespace ivv::oracles

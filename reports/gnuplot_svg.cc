@@ -163,6 +163,7 @@ std::string gnuplot_script(const Plot& plot, SvgSize size) {
      << "set mxtics\nset mytics\n";
   if (plot.log_x) gp << "set logscale x 10\nset format x '%g'\n";
   if (plot.log_y) gp << "set logscale y 10\nset format y '%g'\n";
+  if (plot.margins) gp << "set offsets 0, 0, graph 0.05, graph 0.05\n";
   // A series keeps the colour of its position in plot.series even when one before it has
   // nothing to draw, so that a figure family colours the same curve alike.
   std::vector<std::string> clauses;

@@ -23,25 +23,31 @@ std::string law_section_html(const conformance::Report& report, const std::strin
     rows.push_back(
         {escape(c.id),
          c.passed ? "<span class=\"pass\">pass</span>" : "<span class=\"fail\">FAIL</span>",
-         number_html(c.measured), number_html(c.reference), number_html(c.tolerance),
+         escape(c.measured_text()), escape(c.reference_text()), escape(c.tolerance_text()),
          escape(c.detail) + "<br><small>why this tolerance: " + escape(c.why) + "</small>"});
   }
   html += table({"check", "verdict", "measured", "reference", "tolerance", "what was measured"},
                 rows, table_source);
-  if (!report.not_applicable.empty()) {
-    html += "<p>Not applicable to this law:</p>\n<ul>\n";
-    for (const auto& [id, why] : report.not_applicable)
+  if (!report.skipped.empty()) {
+    html += "<p>Skipped (not applicable to this law, or not claimed):</p>\n<ul>\n";
+    for (const auto& [id, why] : report.skipped)
       html += "<li><code>" + escape(id) + "</code>: " + escape(why) + "</li>\n";
     html += "</ul>\n";
   }
   for (verification::Plot plot : report.plots()) {
     plot.id = slug(anchor + "-" + plot.id);
+    const bool loop = plot.id.find("conformance-loop-") != std::string::npos;
     const std::string caption =
-        " Coefficient of restitution of the reference runs (measured) over the velocity grid" +
-        std::string(report.cor.empty() || !report.cor.front().expected
-                        ? ""
-                        : ", with the COR the law claims (dashed)") +
-        ".";
+        loop ? " Force against spring deformation in one impact per damping (dp45 at the "
+               "default tolerances, the scene's v0): loading up, unloading down; the area "
+               "between them is the work the spring dissipates, and a loop run anticlockwise "
+               "(unloading above loading) creates energy."
+             : " Coefficient of restitution of the reference runs (measured) over the velocity "
+               "grid, with the line e = 1 (elastic)" +
+                   std::string(report.cor.empty() || !report.cor.front().expected
+                                   ? ""
+                                   : " and the COR the law claims (dashed, drawn last)") +
+                   ".";
     if (place) {
       html += place(plot, caption);
       continue;

@@ -11,6 +11,7 @@
 // in double, in the 50-digit reference and on automatic-differentiation types alike.
 #pragma once
 
+#include <cmath>
 #include <concepts>
 #include <optional>
 #include <stdexcept>
@@ -57,18 +58,27 @@ class LawDomainError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The requirements, one concept per group so that a compile error names what is missing.
-//   name, rate_dependent                      identification; rate laws use v in force()
-//   force(h, z, v)           [N]              smooth continuation on the branch of history h
-//   stiffness(h, z, v)       [N/m]            dF/dz on that branch (implicit integrators, events)
-//   rate_stiffness(h, z, v)  [N s/m]          dF/dv on that branch (0 for rate-independent laws)
-//   segment_end(h)           [m]              z where the current loading segment ends, if any
-//   next_segment(h)                           enter the next loading segment
-//   begin_unloading(h, z_m)                   switch to unloading (may throw LawDomainError)
-//   stored_energy(h, z)      [J]              energy recoverable from z down to zero force on
-//                                             the unloading branch (bounds any rebound)
-//   hysteresis_work(h)       [J]              closed-form loop area for a completed unloading
-//                                             branch, or nullopt if the law has none
+// The requirements, with the return types the driver relies on, for scalar T (double, and the
+// 50-digit scalar and automatic-differentiation types when the members are templates on it):
+//   name                     std::string_view  identification (static constexpr)
+//   rate_dependent           bool              rate laws use v in force() (static constexpr)
+//   force(h, z, v)           -> T [N]          smooth continuation on the branch of history h
+//   stiffness(h, z, v)       -> T [N/m]        dF/dz on that branch (implicit integrators, events)
+//   rate_stiffness(h, z, v)  -> T [N s/m]      dF/dv on that branch (0 for rate-independent laws)
+//   segment_end(h)           -> std::optional<double> [m]
+//                                              z where the current loading segment ends, if any
+//   next_segment(h)                            enter the next loading segment
+//   begin_unloading(h, z_m)                    switch to unloading (may throw LawDomainError)
+//   stored_energy(h, z)      -> T [J]          energy recoverable from z down to zero force on
+//                                              the unloading branch, the area under it from z_f
+//                                              to z (during first loading: the area under the
+//                                              loading curve from 0 to z, the energy a reversal
+//                                              there could at most return); it bounds any rebound
+//   hysteresis_work(h)       -> std::optional<double> [J]
+//                                              closed-form loop area for a completed unloading
+//                                              branch, or nullopt if the law has none
+// Here h is history_t<L, T> (const, except for next_segment and begin_unloading), z and v are T.
+// segment_end and hysteresis_work return std::optional<double> for every T (not optional<T>).
 // Optional members, read through the traits below:
 //   History<T>                                 extra history (default Branch<T>)
 //   needs_yield_strength     bool             the law reads z_y/K_y (default false)
@@ -79,42 +89,118 @@ class LawDomainError : public std::runtime_error {
 //                                             branch above z_f (a convex unloading curve: its
 //                                             slope at z_f), or nullopt. Lets the driver decide
 //                                             capture exactly (impact_driver.h)
+//
+// One concept per member, so that assert_contact_law (below) names the member at fault in the
+// first line of a compile error.
 template <class L>
-concept law_has_identity = requires {
+concept law_has_name = requires {
   { L::name } -> std::convertible_to<std::string_view>;
+};
+template <class L>
+concept law_has_rate_flag = requires {
   { L::rate_dependent } -> std::convertible_to<bool>;
 };
-template <class L>
-concept law_has_force = requires(const L& law, const history_t<L, double>& h, double z, double v) {
-  { law.force(h, z, v) } -> std::convertible_to<double>;
-  { law.stiffness(h, z, v) } -> std::convertible_to<double>;
-  { law.rate_stiffness(h, z, v) } -> std::convertible_to<double>;
+template <class L, class T = double>
+concept law_has_force_member = requires(const L& law, const history_t<L, T>& h, T z) {
+  { law.force(h, z, z) } -> std::convertible_to<T>;
 };
-template <class L>
-concept law_has_history = requires(const L& law, history_t<L, double>& h, double z) {
-  { law.segment_end(std::as_const(h)) } -> std::same_as<std::optional<double>>;
+template <class L, class T = double>
+concept law_has_stiffness_member = requires(const L& law, const history_t<L, T>& h, T z) {
+  { law.stiffness(h, z, z) } -> std::convertible_to<T>;
+};
+template <class L, class T = double>
+concept law_has_rate_stiffness_member = requires(const L& law, const history_t<L, T>& h, T z) {
+  { law.rate_stiffness(h, z, z) } -> std::convertible_to<T>;
+};
+template <class L, class T = double>
+concept law_has_segment_end_member = requires(const L& law, const history_t<L, T>& h) {
+  { law.segment_end(h) } -> std::same_as<std::optional<double>>;
+};
+template <class L, class T = double>
+concept law_has_next_segment_member = requires(const L& law, history_t<L, T>& h) {
   law.next_segment(h);
+};
+template <class L, class T = double>
+concept law_has_begin_unloading_member = requires(const L& law, history_t<L, T>& h, T z) {
   law.begin_unloading(h, z);
 };
-template <class L>
-concept law_has_energy = requires(const L& law, const history_t<L, double>& h, double z) {
-  { law.stored_energy(h, z) } -> std::convertible_to<double>;
+template <class L, class T = double>
+concept law_has_stored_energy_member = requires(const L& law, const history_t<L, T>& h, T z) {
+  { law.stored_energy(h, z) } -> std::convertible_to<T>;
+};
+template <class L, class T = double>
+concept law_has_hysteresis_work_member = requires(const L& law, const history_t<L, T>& h) {
   { law.hysteresis_work(h) } -> std::same_as<std::optional<double>>;
 };
+
+// The groups (each a conjunction of the members above).
+template <class L>
+concept law_has_identity = law_has_name<L> && law_has_rate_flag<L>;
+template <class L>
+concept law_has_force =
+    law_has_force_member<L> && law_has_stiffness_member<L> && law_has_rate_stiffness_member<L>;
+template <class L>
+concept law_has_history = law_has_segment_end_member<L> && law_has_next_segment_member<L> &&
+    law_has_begin_unloading_member<L>;
+template <class L>
+concept law_has_energy = law_has_stored_energy_member<L> && law_has_hysteresis_work_member<L>;
 template <class L>
 concept ContactLaw = std::copy_constructible<L> && law_has_identity<L> && law_has_force<L> &&
     law_has_history<L> && law_has_energy<L>;
 
+// True when the law's force is a template on its scalar (it accepts history_t<L, T> and T):
+// then every member must hold for T too (law_supports_scalar).
+template <class L, class T>
+concept law_templated_on = requires(const L& law, const history_t<L, T>& h, T z) {
+  law.force(h, z, z);
+};
+
 // True when law L also runs on scalar T (the 50-digit reference, autodiff types): its members
 // are templates on the scalar. An expression law runs in double only.
 template <class L, class T>
-concept law_supports_scalar = requires(const L& law, history_t<L, T>& h, const history_t<L, T>& ch,
-                                       T z) {
-  { law.force(ch, z, z) } -> std::convertible_to<T>;
-  { law.stiffness(ch, z, z) } -> std::convertible_to<T>;
-  { law.stored_energy(ch, z) } -> std::convertible_to<T>;
-  law.begin_unloading(h, z);
-};
+concept law_supports_scalar = law_has_force_member<L, T> && law_has_stiffness_member<L, T> &&
+    law_has_stored_energy_member<L, T> && law_has_begin_unloading_member<L, T>;
+
+// One static_assert per requirement, each naming its member: called by ivv::simulate(law, ...)
+// and the conformance API on double and, for a law templated on its scalar, on the 50-digit
+// scalar, so that a missing or mistyped member stops compilation with its name in the first
+// error line instead of deep inside the driver. `true` when L models ContactLaw on T.
+template <class L, class T = double>
+constexpr bool assert_contact_law() {
+  static_assert(law_has_name<L>,
+                "ivv::ContactLaw: member `name` missing or mistyped (static constexpr "
+                "std::string_view name = \"my-law\";)");
+  static_assert(law_has_rate_flag<L>,
+                "ivv::ContactLaw: member `rate_dependent` missing or mistyped (static constexpr "
+                "bool rate_dependent = false;)");
+  static_assert(std::copy_constructible<L>, "ivv::ContactLaw: the law must be copy-constructible");
+  static_assert(law_has_force_member<L, T>,
+                "ivv::ContactLaw: member `force(h, z, v)` missing or mistyped: it must take "
+                "(const history_t<L, T>&, T z, T v) and return T [N]");
+  static_assert(law_has_stiffness_member<L, T>,
+                "ivv::ContactLaw: member `stiffness(h, z, v)` missing or mistyped: it must take "
+                "(const history_t<L, T>&, T z, T v) and return T [N/m]");
+  static_assert(law_has_rate_stiffness_member<L, T>,
+                "ivv::ContactLaw: member `rate_stiffness(h, z, v)` missing or mistyped: it must "
+                "take (const history_t<L, T>&, T z, T v) and return T [N s/m]");
+  static_assert(law_has_segment_end_member<L, T>,
+                "ivv::ContactLaw: member `segment_end(h)` missing or mistyped: it must take "
+                "(const history_t<L, T>&) and return std::optional<double> [m] for every T");
+  static_assert(law_has_next_segment_member<L, T>,
+                "ivv::ContactLaw: member `next_segment(h)` missing or mistyped: it must take "
+                "(history_t<L, T>&)");
+  static_assert(law_has_begin_unloading_member<L, T>,
+                "ivv::ContactLaw: member `begin_unloading(h, z_m)` missing or mistyped: it must "
+                "take (history_t<L, T>&, T z_m)");
+  static_assert(law_has_stored_energy_member<L, T>,
+                "ivv::ContactLaw: member `stored_energy(h, z)` missing or mistyped: it must take "
+                "(const history_t<L, T>&, T z) and return T [J]");
+  static_assert(law_has_hysteresis_work_member<L, T>,
+                "ivv::ContactLaw: member `hysteresis_work(h)` missing or mistyped: it must take "
+                "(const history_t<L, T>&) and return std::optional<double> [J] for every T (not "
+                "std::optional<T>)");
+  return true;
+}
 
 template <class L>
 constexpr bool law_needs_yield_strength() {

@@ -9,6 +9,7 @@
 // Including this header compiles every integrator for the law: expect a few seconds per law.
 #pragma once
 
+#include <type_traits>
 #include <vector>
 
 #include "scene/input_error.h"
@@ -17,13 +18,26 @@
 
 namespace ivv {
 
+// Stops compilation, naming the member, unless Law models ContactLaw on double and, when its
+// members are templates on the scalar, on the 50-digit scalar of the reference too.
+template <class Law>
+constexpr bool assert_contact_law_everywhere() {
+  static_assert(assert_contact_law<Law, double>());
+  if constexpr (law_templated_on<Law, mp50>) static_assert(assert_contact_law<Law, mp50>());
+  return true;
+}
+
 // Validates the scene and options (InputError naming the field) and runs one impact of `law`.
 // Failures of the integration or of the law's domain come back in the result's status/reason.
-template <ContactLaw Law>
-ImpactResult simulate(const Law& law, const Scene& scene,
-                      IntegratorKind integrator = IntegratorKind::odeint_dopri5,
-                      const IntegratorOptions& options = {},
-                      std::vector<TrajectoryPoint>* trajectory = nullptr) {
+// A type that does not model ContactLaw is a compile error naming the member at fault.
+template <class Law>
+requires(!std::is_convertible_v<const Law&, const SimulationRequest&> &&
+         !std::is_convertible_v<const Law&, const ValidatedRequest&>) ImpactResult
+    simulate(const Law& law, const Scene& scene,
+             IntegratorKind integrator = IntegratorKind::odeint_dopri5,
+             const IntegratorOptions& options = {},
+             std::vector<TrajectoryPoint>* trajectory = nullptr) {
+  static_assert(assert_contact_law_everywhere<Law>());
   validate(scene);
   validate(options);
   if (Law::rate_dependent && scene.damping.kind != Damping::Kind::none)

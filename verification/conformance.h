@@ -13,6 +13,13 @@
 //   static.attractive       F >= 0 on loading and on unloading above the permanent set (a
 //                           failure unless the law allows tension; reported either way)
 //   static.breakpoints      F continuous at each declared kink (segment_end)
+//   static.continuity       no jump anywhere, declared or not: loading on [0, z_scan] and
+//                           unloading from three z_m are sampled densely (1000 intervals) and
+//                           every interval whose force changes by more than 1e-12 F_ref is
+//                           bisected down to adjacent doubles; a change that survives is a jump,
+//                           reported with its z and the two one-sided values
+//                           (verification/continuity_scan.h says what it cannot see). z_scan is
+//                           beyond the grid's largest z_m: max(2 z_ref, 1.25 max z_m).
 //   static.unloading_switch F continuous where unloading begins (z = z_m)
 //   static.loading_monotone F non-decreasing in z on first loading
 //   static.unloading_below  unloading at or below loading: no energy created by a cycle
@@ -21,13 +28,21 @@
 //                           applicable to expression laws (their stiffness is a difference)
 //   static.stored_energy    `stored_energy` = the integral of the unloading force (Gauss-Kronrod)
 // Dynamic checks, over v0 (at least three decades) x damping (none and a dashpot, for laws
-// independent of the rate), with the tightest reference available:
+// independent of the rate), with the tightest reference available. A run that fails because
+// the law is not defined there (LawDomainError, e.g. the linearized law below z_m = 2.25 z_y)
+// in the reference and in every integrator alike is outside the law's domain: it is counted
+// and named in the details, not judged; a law defined nowhere on the grid fails.
+// A check that does not apply to the law, or a claim not made, is skipped with its reason.
 //   dynamic.energy          the energy ledger closes
 //   dynamic.cor_range       0 <= e <= 1
 //   dynamic.cor_definitions Newton, Poisson and energetic CORs agree
 //   dynamic.integrators     the integrators agree with the reference (mp50 when the law is
 //                           templated on its scalar, else dp45 at rtol 1e-13, error estimated
-//                           from its run at 1e-12)
+//                           from its run at 1e-12): e, F_max, and t_contact for separated runs;
+//                           a captured run (no rebound) has no contact time of its own (only
+//                           the moment a capture criterion was met), so there e = 0 within
+//                           the capture bound e_bound is compared instead, and a separated run
+//                           whose e lies within another's capture bound agrees with it
 //   dynamic.monotone_v0     e non-increasing in v0            (when claimed)
 //   dynamic.monotone_damping e non-increasing in the damping  (when claimed)
 //   dynamic.low_speed       e -> 1 as v0 -> 0                 (when claimed)
@@ -35,9 +50,11 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -75,6 +92,8 @@ struct LawUnderTest {
   bool runs_in_reference = true;  // templated on its scalar: mp50 can run it
   std::function<std::unique_ptr<LawProbe>(const Scene&)> probe;
   std::function<ImpactResult(const Scene&, IntegratorKind, const IntegratorOptions&)> simulate;
+  // One impact's trajectory (for the force-deformation loops of the result); may be empty.
+  std::function<std::vector<TrajectoryPoint>(const Scene&, const IntegratorOptions&)> trajectory;
 };
 
 // What the law's author claims; each claim is a check.
@@ -101,57 +120,111 @@ struct Grid {
   Scene scene;                     // materials, mass, radius; velocity and damping are set below
   std::vector<double> velocities;  // v0 [m/s]; empty: 7 points log-spaced over three decades,
                                    // 0.01 to 10 times the scene's v0
-  std::vector<double> zetas = {0.0, 0.1};  // 0: no dashpot (rate-dependent laws: only 0;
-                                           // default_grid of a scene without yield: only 0;
-                                           // of a scene with a [structure] (and S_y): {0, the
-                                           // scene's zeta})
+  std::vector<double> zetas = {0.0, 0.1};  // damping ratios of the series dashpot; 0: none
+                                           // (needs a scene with yield, where zeta is defined;
+                                           // default_grid of a scene without yield: only 0; of a
+                                           // scene with a [structure] and S_y: {0, its zeta})
+  std::vector<double> dashpots;            // dashpot coefficients c [N s/m], besides the zetas
+                                           // (any scene); rate-dependent laws run only with none
   IntegratorOptions options;               // of the integrators under comparison
   std::vector<IntegratorKind> integrators = {IntegratorKind::odeint_dopri5, IntegratorKind::dp45,
                                              IntegratorKind::gsl_rk8pd,
                                              IntegratorKind::odeint_rosenbrock4};
 };
 
+// How a check's tolerance bounds what it measured.
+enum class Bound {
+  at_most,  // passes when measured <= tolerance (a deviation, an error, a rise)
+  at_least  // passes when measured >= tolerance (a lower bound, e.g. the smallest force)
+};
+
 struct Check {
   std::string id;
   bool passed = false;
-  double measured = 0.0;
-  double reference = 0.0;
-  double tolerance = 0.0;
-  std::string why;     // why the tolerance is what it is
-  std::string detail;  // what was measured, where the worst case was
+  double measured = 0.0;   // what the check compares with its tolerance, in `unit`
+  double reference = 0.0;  // what it would be for an exact law and solver, in `unit`
+  double tolerance = 0.0;  // the bound on measured (see `bound`), in `unit`
+  Bound bound = Bound::at_most;
+  // The unit of measured, reference and tolerance: "-" (a pure number, e.g. a COR), or a scale
+  // ("F_ref", "F_ref z_ref", "k_ref", "E0") whose SI value is `unit_si` in `si_unit`.
+  std::string unit = "-";
+  double unit_si = 1.0;  // one `unit` in SI (NaN for "-")
+  std::string si_unit;   // "N", "J", "N/m" ("" for "-")
+  // What was compared at the worst point, in SI: the law's (or integrator's) value and its
+  // reference (e.g. F(0) = 114400 N against 0 N; delivered e against the claimed e).
+  std::optional<double> value, reference_value;
+  std::string value_unit;  // of value and reference_value ("N", "J", "-")
+  std::string why;         // why the tolerance is what it is
+  std::string detail;      // what was measured, where the worst case was
+  // measured, reference and tolerance with their unit and SI value, for people:
+  // "0.2529 F_ref (3180 N)", "<= 1e-12 F_ref (1.3e-08 N)"
+  std::string measured_text() const;
+  std::string reference_text() const;
+  std::string tolerance_text() const;
+  std::string line() const;  // "pass  static.onset  <detail> (measured ..., tolerance ...)"
+};
+
+// A check that did not run, and why (not applicable to this law, or not claimed).
+struct Skipped {
+  std::string id;
+  std::string why;
 };
 
 struct CorPoint {
-  double v0 = 0.0, zeta = 0.0;
-  std::optional<double> e;         // the reference run; nullopt when it failed
-  std::optional<double> expected;  // the claimed COR, when claimed
-  std::string status;              // separated, captured, or the failure reason
+  double v0 = 0.0;
+  double zeta = 0.0;  // damping ratio (0: no dashpot; NaN: not defined on a scene without yield)
+  double c = std::numeric_limits<double>::infinity();  // dashpot [N s/m]; inf: no dashpot
+  std::optional<double> e;                             // the reference run; nullopt when it failed
+  std::optional<double> e_bound;                       // captured: the true e lies in [0, e_bound]
+  std::optional<double> expected;                      // the claimed COR, when claimed
+  std::string status;                                  // separated, captured, or the failure reason
+  std::string damping_label() const;  // "no dashpot", "zeta = 0.1", "c = 500 N s/m"
 };
 
-struct Report {
+// One force-deformation loop of the reference run (plotted per law: a loop that encloses a
+// negative area creates energy).
+struct ForceLoop {
+  double v0 = 0.0;           // [m/s]
+  std::string damping;       // as CorPoint::damping_label
+  std::vector<double> z, F;  // [m], [N]
+};
+
+// The verdict of a law: every check that ran, every check skipped with its reason, the COR
+// over the grid and a force-deformation loop. It reports itself, so that every front end (the
+// command line, JSON, the HTML report, GoogleTest) prints the same words.
+struct ConformanceResult {
   std::string law;
   std::string description;
   std::vector<Check> checks;
-  std::vector<std::pair<std::string, std::string>> not_applicable;  // id, why
+  std::vector<Skipped> skipped;
   std::vector<CorPoint> cor;
+  std::vector<ForceLoop> loops;
   bool passed() const;
-  std::string brief() const;  // one line: verdict and the failed checks
-  std::string full() const;   // one line per check, then what was not applicable
-  std::vector<verification::Plot> plots() const;  // e(v0) per damping, with the claim
+  std::string brief() const;  // one line: verdict, the checks passed, skipped, and failed
+  std::string full() const;   // one line per check, then what was skipped and why
+  // e(v0) per damping with e = 1 and the claim; F(z) loops of the reference runs
+  std::vector<verification::Plot> plots() const;
+  const Check* find(std::string_view id) const;  // nullptr when it did not run
+  const Skipped* find_skipped(std::string_view id) const;
 };
+using Report = ConformanceResult;  // the former name, kept for existing code
 
-// {"verdict": "pass"|"fail", "law": {"name", "description"}, "checks": [{"id", "passed",
-// "measured", "reference", "tolerance", "why", "detail"}], "not_applicable": [{"id", "why"}],
-// "cor": [{"v0", "zeta", "e", "expected", "status"}]} (SPEC §5; NaN and absent values are null).
-nlohmann::json to_json(const Report& report);
+// {"verdict": "pass"|"fail", "brief", "law": {"name", "description"}, "checks": [{"id",
+// "passed", "measured", "reference", "tolerance", "bound", "unit", "unit_si", "si_unit",
+// "value", "reference_value", "value_unit", "why", "detail"}], "skipped": [{"id", "why"}],
+// "not_applicable" (the same list under its former name), "cor": [{"v0", "zeta", "c", "e",
+// "e_bound", "expected", "status"}]} (SPEC §5; NaN and absent values are null).
+nlohmann::json to_json(const ConformanceResult& result);
 
-Report run_conformance(const LawUnderTest& law, const Claims& claims, const Grid& grid);
+ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims, const Grid& grid);
 
 // A built-in law of the registry, or the expression law of a request (law, parameters and
 // expression taken from `request`; scene, integrator and options ignored).
 LawUnderTest registry_law(const SimulationRequest& request);
 
-// The default grid on a scene (velocities empty: filled by run_conformance).
+// The default grid on a scene (velocities empty: filled by run_conformance). Dampings: none,
+// zeta = 0.1 when the scene has a yield strength (zeta is defined), and the scene's own dashpot
+// when it gives one (a ratio, a coefficient, or a structure's coefficient).
 Grid default_grid(const Scene& scene);
 
 }  // namespace ivv::conformance

@@ -19,7 +19,7 @@
 
 namespace ivv::conformance {
 
-template <ContactLaw Law>
+template <class Law>
 class TypedProbe final : public LawProbe {
  public:
   explicit TypedProbe(Law law) : law_(std::move(law)) {}
@@ -70,9 +70,11 @@ class TypedProbe final : public LawProbe {
   double z_max_ = 0.0;
 };
 
-// Wraps a C++ law: `make_law(const Scene&) -> Law`.
-template <ContactLaw Law, class MakeLaw>
+// Wraps a C++ law: `make_law(const Scene&) -> Law`. A Law that does not model ContactLaw is a
+// compile error naming the member at fault (solver/law.h).
+template <class Law, class MakeLaw>
 LawUnderTest law_under_test(std::string name, std::string description, MakeLaw make_law) {
+  static_assert(assert_contact_law_everywhere<Law>());
   LawUnderTest t;
   t.name = std::move(name);
   t.description = std::move(description);
@@ -85,6 +87,11 @@ LawUnderTest law_under_test(std::string name, std::string description, MakeLaw m
   };
   t.simulate = [make_law](const Scene& s, IntegratorKind k, const IntegratorOptions& o) {
     return ivv::simulate(make_law(s), s, k, o);
+  };
+  t.trajectory = [make_law](const Scene& s, const IntegratorOptions& o) {
+    std::vector<TrajectoryPoint> points;
+    ivv::simulate(make_law(s), s, IntegratorKind::dp45, o, &points);
+    return points;
   };
   return t;
 }

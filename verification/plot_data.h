@@ -22,6 +22,8 @@ struct Plot {
   bool log_x = false;
   bool log_y = false;
   std::vector<Series> series;
+  bool margins = false;  // leave 5 % of the data range free at each side (a constant curve, or a
+                         // curve at a bound such as e = 1, stays off the frame)
 };
 
 }  // namespace ivv::verification

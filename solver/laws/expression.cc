@@ -257,8 +257,8 @@ double ExpressionLaw<Rate>::stored_energy(const Branch<double>& h, double z) con
 }
 
 std::function<double(double)> compile_cor_claim(const std::string& text,
-                                                const LawParameters& parameters,
-                                                const Scene& scene) {
+                                                const LawParameters& parameters, const Scene& scene,
+                                                std::span<const ExpressionFunction> functions) {
   struct Claim {
     mu::Parser parser;
     double v0 = 0;
@@ -271,8 +271,14 @@ std::function<double(double)> compile_cor_claim(const std::string& text,
   claim->v0 = scene.velocity;
   if (text.find_first_not_of(" \t") == std::string::npos)
     throw InputError("--expect-cor", "the claimed COR is an empty expression; give e.g. '0.8'");
-  setup_parser(claim->parser, text, "--expect-cor", {{"v0", &claim->v0}}, constants,
-               known_names("v0", constants), "v0");
+  std::string known = known_names("v0", constants);
+  if (!functions.empty()) known += "; functions";
+  for (const ExpressionFunction& f : functions) {
+    known += " " + std::string(f.signature);
+    if (f.one) claim->parser.DefineFun(std::string(f.name), f.one);
+    if (f.two) claim->parser.DefineFun(std::string(f.name), f.two);
+  }
+  setup_parser(claim->parser, text, "--expect-cor", {{"v0", &claim->v0}}, constants, known, "v0");
   return [claim](double v0) {
     claim->v0 = v0;
     try {

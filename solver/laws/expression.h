@@ -35,6 +35,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -129,12 +130,23 @@ struct ExpressionLaw {
   static double step(double scale, double at);
 };
 
-// The COR a law claims, as an expression in v0 [m/s], the scene's constants and the law's
-// parameters (`--expect-cor`). Throws ExpressionError("--expect-cor", ...) when malformed. The
-// function is not thread-safe (it owns one parser).
+// A function an expression may call, e.g. a published COR formula (oracles/expression_functions.h
+// lists them; the solver defines none itself). One or two arguments; a value outside the
+// function's domain evaluates to NaN.
+struct ExpressionFunction {
+  std::string_view name;                    // e.g. "hc_cor"
+  std::string_view signature;               // e.g. "hc_cor(u0)"
+  std::string_view meaning;                 // one line: what it computes, its source
+  double (*one)(double) = nullptr;          // arity 1, or
+  double (*two)(double, double) = nullptr;  // arity 2
+};
+
+// The COR a law claims, as an expression in v0 [m/s], the scene's constants, the law's
+// parameters and `functions` (`--expect-cor`). Throws ExpressionError("--expect-cor", ...) when
+// malformed. The function is not thread-safe (it owns one parser).
 std::function<double(double)> compile_cor_claim(const std::string& text,
-                                                const LawParameters& parameters,
-                                                const Scene& scene);
+                                                const LawParameters& parameters, const Scene& scene,
+                                                std::span<const ExpressionFunction> functions = {});
 
 extern template struct ExpressionLaw<false>;
 extern template struct ExpressionLaw<true>;

@@ -1,0 +1,90 @@
+// Shared by the units of the conformance checks (not installed, not for law authors):
+//   conformance_static.cc    the static checks (the law's equations, no integrator)
+//   conformance_dynamic.cc   the grid of impacts and the dynamic checks judged on it
+//   conformance_result.cc    the result reporting itself (brief, full, plots, JSON)
+//   conformance_registry.cc  the built-in and expression laws of the registry as laws under test
+//   conformance.cc           run_conformance: the grid completed, then the checks in order
+#pragma once
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "solver/format.h"
+#include "verification/conformance.h"
+
+namespace ivv::conformance::detail {
+
+// Rounding of a force formula in double, relative to the force scale F_ref: a few hundred ulps.
+inline constexpr double kRounding = 1e-12;
+inline constexpr const char* kRoundingWhy =
+    "exact in exact arithmetic; 1e-12 F_ref allows the rounding of evaluating the formulas in "
+    "double (a few hundred ulps)";
+// Two exact derivatives (hand-written and autodiff) differ only by rounding, amplified by the
+// conditioning of the formula; 1e-10 of the stiffness scale covers 1e6 ulps.
+inline constexpr double kDerivative = 1e-10;
+// The reference's error in e: mp50 ~1e-12 against closed forms; dp45 at rtol 1e-13 ~1e-10
+// (global error N rtol over N <= 1000 steps). A rise of e above 1e-9 is the law's.
+inline constexpr double kMonotone = 1e-9;
+
+// Numbers in sentences: the one formatter (solver/format.h).
+using ivv::fmt;
+
+// The Hertz scales of a scene at velocity v: z_ref = (5 m v^2/(4 K_h))^{2/5} [m] (the undamped
+// Hertz maximum compression), F_ref = K_h z_ref^{3/2} [N], k_ref = F_ref/z_ref [N/m], v [m/s].
+struct Scales {
+  double z = 0, F = 0, k = 0, v = 0;
+};
+Scales hertz_scales(const Scene& s, double v);
+
+inline Check make_check(std::string id, double measured, double reference, double tolerance,
+                        bool passed, std::string why, std::string detail) {
+  Check c;
+  c.id = std::move(id);
+  c.passed = passed;
+  c.measured = measured;
+  c.reference = reference;
+  c.tolerance = tolerance;
+  c.why = std::move(why);
+  c.detail = std::move(detail);
+  return c;
+}
+
+// Advance a fresh probe along first loading to z (through every kink below z).
+void load_to(LawProbe& probe, double z);
+
+// "no dashpot", "zeta = 0.1", "c = 500 N s/m"
+std::string damping_label(const Damping& d);
+
+// The scene of one grid point: velocity v0 and the dashpot.
+Scene at(const Scene& base, double v0, const Damping& damping);
+
+// One grid point: the reference run and every integrator's run.
+struct Run {
+  double v0 = 0;
+  Damping damping;
+  double zeta = 0;  // the damping ratio (0: no dashpot; NaN: a coefficient on a scene without
+                    // yield, where zeta is not defined)
+  double c = std::numeric_limits<double>::infinity();  // the dashpot [N s/m]; inf: none
+  ImpactResult reference;
+  double reference_error = 0;  // estimate (double-precision reference only)
+  std::vector<std::pair<IntegratorKind, ImpactResult>> runs;
+};
+
+// Every impact of the grid (the dampings a rate-dependent law cannot take are left out).
+std::vector<Run> run_grid(const LawUnderTest& law, const Grid& grid);
+
+// The static checks on the scene (velocity set to the grid's largest), in order; z_scan [m] is
+// how far the discontinuity scan goes (beyond the largest z_m of the grid).
+void static_checks(const LawUnderTest& law, const Scene& scene, double v_hi, double z_scan,
+                   ConformanceResult& result);
+
+// The dynamic checks judged on the runs, in order.
+void dynamic_checks(const LawUnderTest& law, const Claims& claims, const Grid& grid,
+                    const std::vector<Run>& runs, ConformanceResult& result);
+
+}  // namespace ivv::conformance::detail
