@@ -1,5 +1,6 @@
 // ivv check-law: a contact law (--force EXPR, or --law NAME) through the conformance checks
 // (verification/conformance.h), with a verdict per check; --report DIR writes its HTML page.
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -7,6 +8,7 @@
 #include "app/cli_args.h"
 #include "app/command.h"
 #include "app/model_flags.h"
+#include "oracles/expression_functions.h"
 #include "reports/law_report.h"
 #include "scene/input_error.h"
 #include "verification/conformance.h"
@@ -19,15 +21,25 @@ struct CheckLawFlags {
   std::optional<double> cor_tolerance;
   bool elastic_at_low_speed = false;
   bool no_monotone = false;
-  std::string v0_grid, zeta_grid;
+  std::string v0_grid, zeta_grid, c_grid;
   bool json = false;
   std::string report_dir;
+  std::string name;        // the law's name in the verdict and the report
+  bool law_given = false;  // --law NAME was typed (a built-in law is checked by name)
 };
+
+// `--functions`: the published formulas an --expect-cor expression may call.
+int list_functions() {
+  for (const ExpressionFunction& f : oracles::expression_functions())
+    std::cout << f.signature << "\t" << f.meaning << "\n";
+  return 0;
+}
 
 int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& command_line) {
   if (f.scene.empty()) f.scene = "paper";
-  if (f.force.empty() && f.law == "elastoplastic" && f.params.empty() && !f.hc_k && !f.hc_mu)
-    throw InputError("--force", "give the law to check: --force EXPR (or --law NAME)");
+  if (f.force.empty() && !c.law_given && f.params.empty() && !f.hc_k && !f.hc_mu)
+    throw InputError("--force",
+                     "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
   const SimulationRequest req = to_request(to_options(f));
   conformance::Grid grid = conformance::default_grid(req.scene);
   grid.options = req.options;
@@ -37,11 +49,16 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
   if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta", false);
   for (double z : grid.zetas)
     if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
+  if (!c.c_grid.empty()) grid.dashpots = parse_grid(c.c_grid, "--c", false);
+  for (double d : grid.dashpots)
+    if (!(d > 0 && std::isfinite(d)))
+      throw InputError("--c", "dashpot coefficients must be finite and > 0 N s/m");
   conformance::Claims claims;
   claims.elastic_at_low_speed = c.elastic_at_low_speed;
   claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping = !c.no_monotone;
   if (!c.expect_cor.empty()) {
-    claims.expected_cor = compile_cor_claim(c.expect_cor, req.parameters, req.scene);
+    claims.expected_cor =
+        compile_cor_claim(c.expect_cor, req.parameters, req.scene, oracles::expression_functions());
     claims.expected_cor_text = c.expect_cor;
   }
   if (c.cor_tolerance) {
@@ -51,8 +68,9 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
     claims.cor_tolerance_reason = "given on the command line (--cor-tolerance)";
   }
   if (!c.report_dir.empty()) reports::check_report_dir(c.report_dir);
-  const conformance::Report report =
-      conformance::run_conformance(conformance::registry_law(req), claims, grid);
+  conformance::LawUnderTest law = conformance::registry_law(req);
+  if (!c.name.empty()) law.name = c.name;
+  const conformance::Report report = conformance::run_conformance(law, claims, grid);
   if (!c.report_dir.empty()) {
     const auto index = reports::write_law_report(report, c.report_dir, command_line);
     std::cerr << "ivv check-law: wrote " << index.string() << "\n";
@@ -91,6 +109,7 @@ class CheckLaw final : public Command {
   void add_flags(CLI::App& cmd);
   ModelFlags flags_;
   CheckLawFlags check_;
+  bool functions_ = false;
 };
 
 void CheckLaw::add_flags(CLI::App& cmd) {
@@ -112,6 +131,12 @@ void CheckLaw::add_flags(CLI::App& cmd) {
                  "only)");
   cmd.add_flag("--json", check_.json, "print the verdict and every check as JSON");
   cmd.add_option("--report", check_.report_dir, "write DIR/index.html for this law");
+  cmd.add_option("--c", check_.c_grid,
+                 "dashpot coefficients c [N s/m] to check besides the zetas, LO:HI:N or a,b,c "
+                 "(any scene; default: the scene's own dashpot, if it has one)");
+  cmd.add_option("--name", check_.name, "the law's name in the verdict and the report");
+  cmd.add_flag("--functions", functions_,
+               "list the published formulas an --expect-cor expression may call, and exit");
 }
 
 }  // namespace
