@@ -253,7 +253,11 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   }
 
   // The twelve stages of a step of length h, the eighth-order solution x1 and f(t0 + h, x1).
-  void advance(const System& sys, T h) {
+  // advance and error_norm are forced inline into step(): as separate calls the same
+  // instructions ran 15-25 % slower (a driver micro-benchmark, dop853 at rtol 1e-10,
+  // elastoplastic with dashpot, medians of 8-15 alternated runs: 183 against 143-147 us under
+  // load; callgrind counts equal), as in the single function they replace.
+  [[gnu::always_inline]] void advance(const System& sys, T h) {
     stage<1, 0>(sys, h);
     stage<2, 0, 1>(sys, h);
     stage<3, 0, 2>(sys, h);
@@ -271,7 +275,7 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   }
 
   // ||err|| of the step of length h just advanced (the comment at the top of this file).
-  T error_norm(T h) const {
+  [[gnu::always_inline]] T error_norm(T h) const {
     using namespace dop853_tableau;
     T sum5 = 0, sum3 = 0;
     for (std::size_t m = 0; m < N; ++m) {
