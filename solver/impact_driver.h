@@ -216,20 +216,22 @@ class ImpactDriver {
 
   NormalisedRun<System> run() {
     begin();
+    try {
+      return phases();
+    } catch (const EventLocationError& err) {  // a root finder out of iterations
+      return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
+    }
+  }
+
+ private:
+  // The phase loop; EventLocationError from the locator or the refinement propagates to run().
+  NormalisedRun<System> phases() {
     for (;;) {
-      if (!resume_) {
-        if (std::optional<std::string> why = advance())
-          return fail(FailureKind::integrator, std::move(*why));
-      }
+      if (!resume_ && !advance()) return fail(FailureKind::integrator, std::move(failure_));
       resume_ = false;
       const T t0 = scan_t0_, t1 = stepper_.t1();
       const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
-      Earliest earliest;
-      try {
-        earliest = locate(active);
-      } catch (const EventLocationError& err) {
-        return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
-      }
+      const Earliest earliest = locate(active);
       if (!earliest.t) {
         emit_samples(t0, t1);
         if (sys_.branch.phase == Phase::unloading)
@@ -257,7 +259,6 @@ class ImpactDriver {
     }
   }
 
- private:
   // What acting on the events of one time did.
   struct Fired {
     bool separated = false;
@@ -278,8 +279,8 @@ class ImpactDriver {
     if (observer_) (*observer_)(0.0, x, sys_);
   }
 
-  // One accepted step, unless a limit is reached or the stepper fails: then why.
-  std::optional<std::string> advance() {
+  // One accepted step; false when a limit is reached or the stepper fails (failure_ says why).
+  bool advance() {
     if (stepper_.steps() >= opt_.max_steps) {
       std::ostringstream os;
       os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
@@ -291,18 +292,23 @@ class ImpactDriver {
            << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
       else
         os << "; raise --max-steps or loosen --rtol";
-      return os.str();
+      failure_ = os.str();
+      return false;
     }
     if (stepper_.t1() > opt_.tau_max) {
       std::ostringstream os;
       os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
-      return os.str();
+      failure_ = os.str();
+      return false;
     }
     const StepResult step = stepper_.step(sys_);
-    if (!step.ok) return step.reason;
+    if (!step.ok) {
+      failure_ = step.reason;
+      return false;
+    }
     scan_t0_ = stepper_.t0();
     scan_x0_ = stepper_.x0();
-    return std::nullopt;
+    return true;
   }
 
   // The earliest crossing of the active events on the part of the step being scanned.
@@ -326,13 +332,8 @@ class ImpactDriver {
     } else {
       const EventKind kind = active.kinds[first];
       auto value = [this](EventKind k, const state_type& s) { return event_root(k, sys_, s); };
-      Refinement<T> refined;
-      try {
-        refined =
-            refine_on_restep(stepper_, sys_, kind, event_row(kind).direction, te, xe, value, opt_);
-      } catch (const EventLocationError& err) {
-        return std::string(Stepper::name) + ": " + err.what();
-      }
+      const Refinement<T> refined =
+          refine_on_restep(stepper_, sys_, kind, event_row(kind).direction, te, xe, value, opt_);
       if (!refined.failure.empty()) return refined.failure;
       te = refined.tau;  // events of other kinds are judged at the refined state (same step)
     }
@@ -465,6 +466,7 @@ class ImpactDriver {
   // A dense-output step goes on past an event that changes no branch: `resume_` says so, and
   // the scan of the current step starts at (scan_t0_, scan_x0_).
   bool resume_ = false;
+  std::string failure_;  // why advance() could not take a step
   T scan_t0_ = 0;
   state_type scan_x0_{};
 };
