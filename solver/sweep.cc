@@ -210,6 +210,54 @@ fs::path SweepSink::journal_path() const {
   return fs::path(options_.csv.string() + ".journal");
 }
 
+// The partial CSV: the header and rows 0..k-1 in order (a torn last line is cut off). False when
+// its header is not this sweep's (then it is rewritten from scratch).
+bool SweepSink::read_partial(const SweepRequest& request, const fs::path& partial, std::size_t& k) {
+  std::ifstream in(partial, std::ios::binary);
+  std::string line;
+  std::uintmax_t valid = 0;
+  bool partial_ok = false;
+  const std::string header = sweep_csv_header();
+  if (std::getline(in, line) && !in.eof() && line + '\n' == header) {
+    partial_ok = true;
+    valid = header.size();
+    while (k < total_ && std::getline(in, line) && !in.eof()) {
+      if (line.rfind(row_prefix(request, k), 0) != 0) break;
+      count(line);
+      valid += line.size() + 1;
+      ++k;
+    }
+  }
+  in.close();
+  if (partial_ok) fs::resize_file(partial, valid);
+  return partial_ok;
+}
+
+// The journal: every finished point as "index row"; rows >= k are read back into pending_.
+void SweepSink::read_journal(const SweepRequest& request, const fs::path& journal,
+                             const std::string& journal_header, std::size_t k) {
+  std::ifstream in(journal, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || in.eof() || line != journal_header)
+    throw InputError("--resume", journal.string() +
+                                     " was written by another sweep (scene, law, integrator, "
+                                     "tolerances or grid differ): delete it or rerun that sweep");
+  std::uintmax_t valid = line.size() + 1;
+  while (std::getline(in, line) && !in.eof()) {
+    valid += line.size() + 1;
+    const std::size_t space = line.find(' ');
+    if (space == std::string::npos || space == 0) continue;  // unreadable: recompute it
+    char* end = nullptr;
+    const unsigned long long index = std::strtoull(line.c_str(), &end, 10);
+    if (end != line.c_str() + space || index >= total_ || index < k) continue;
+    std::string row = line.substr(space + 1) + '\n';
+    if (row.rfind(row_prefix(request, index), 0) != 0) continue;
+    if (pending_.emplace(index, std::move(row)).second) count(pending_[index]);
+  }
+  in.close();
+  fs::resize_file(journal, valid);  // drop a line torn by SIGKILL before appending
+}
+
 SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
     : options_(std::move(options)), total_(point_count(request)) {
   validate(request);  // before any file is touched
@@ -240,50 +288,12 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
                                      " exists: an interrupted sweep left it. Add --resume to "
                                      "continue it, or delete it to start over");
 
-  // The partial CSV: the header and rows 0..k-1 in order (a torn last line is cut off).
+  // The partial CSV: the header and rows 0..k-1 in order; the journal: rows >= k.
   std::size_t k = 0;
   bool partial_ok = false;
-  if (options_.resume && have_journal && fs::exists(partial, ec)) {
-    std::ifstream in(partial, std::ios::binary);
-    std::string line;
-    std::uintmax_t valid = 0;
-    const std::string header = sweep_csv_header();
-    if (std::getline(in, line) && !in.eof() && line + '\n' == header) {
-      partial_ok = true;
-      valid = header.size();
-      while (k < total_ && std::getline(in, line) && !in.eof()) {
-        if (line.rfind(row_prefix(request, k), 0) != 0) break;
-        count(line);
-        valid += line.size() + 1;
-        ++k;
-      }
-    }
-    in.close();
-    if (partial_ok) fs::resize_file(partial, valid);
-  }
-  // The journal: every finished point as "index row"; rows >= k are read back.
-  if (options_.resume && have_journal) {
-    std::ifstream in(journal, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line) || in.eof() || line != journal_header)
-      throw InputError("--resume", journal.string() +
-                                       " was written by another sweep (scene, law, integrator, "
-                                       "tolerances or grid differ): delete it or rerun that sweep");
-    std::uintmax_t valid = line.size() + 1;
-    while (std::getline(in, line) && !in.eof()) {
-      valid += line.size() + 1;
-      const std::size_t space = line.find(' ');
-      if (space == std::string::npos || space == 0) continue;  // unreadable: recompute it
-      char* end = nullptr;
-      const unsigned long long index = std::strtoull(line.c_str(), &end, 10);
-      if (end != line.c_str() + space || index >= total_ || index < k) continue;
-      std::string row = line.substr(space + 1) + '\n';
-      if (row.rfind(row_prefix(request, index), 0) != 0) continue;
-      if (pending_.emplace(index, std::move(row)).second) count(pending_[index]);
-    }
-    in.close();
-    fs::resize_file(journal, valid);  // drop a line torn by SIGKILL before appending
-  }
+  if (options_.resume && have_journal && fs::exists(partial, ec))
+    partial_ok = read_partial(request, partial, k);
+  if (options_.resume && have_journal) read_journal(request, journal, journal_header, k);
   resumed_ = k + pending_.size();
   cursor_ = next_write_ = k;
 

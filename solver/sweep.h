@@ -131,6 +131,10 @@ class SweepSink {
   std::filesystem::path journal_path() const;
 
  private:
+  bool read_partial(const SweepRequest& request, const std::filesystem::path& partial,
+                    std::size_t& k);
+  void read_journal(const SweepRequest& request, const std::filesystem::path& journal,
+                    const std::string& journal_header, std::size_t k);
   void write_ready();                                      // caller holds mutex_
   void record(std::size_t index, const std::string& row);  // caller holds mutex_
   void count(const std::string& row);
