@@ -368,6 +368,54 @@ ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
   return r;
 }
 
+namespace {
+// The integrator's words: choose_integrator()'s reasons under --integrator auto, else the
+// integrator requested.
+void add_integrator_reasons(const SimulationRequest& req, const ModelDecision& d,
+                            std::vector<std::string>& reasons) {
+  if (req.auto_integrator)
+    for (std::string& why : choose_integrator(req).reasons) reasons.push_back(std::move(why));
+  else
+    reasons.push_back("integrator " + std::string(to_string(d.integrator)) +
+                      " as requested (--integrator)");
+}
+
+// Why route 5 integrates the full model, with the integrator's words and the capture criterion.
+void add_integrated_reasons(const SimulationRequest& req, const DerivedParameters& p,
+                            const ModelDecision& d, std::vector<std::string>& reasons) {
+  const std::string law(to_string(req.law));
+  if (req.law == LawKind::expression)
+    reasons.push_back("an expression law has no closed form: integrated");
+  else if (req.law == LawKind::elastoplastic) {
+    std::string why = "elastoplastic with a dashpot: no exact closed form; ";
+    if (d.linear_difference >= 0)
+      why += "the linearized closed form's estimated error 2 (1 + 10 zeta) D0 = " +
+             fmt(kLinearSafety * (1 + kLinearZetaGrowth * p.zeta) * d.linear_difference) +
+             " (D0 = " + fmt(d.linear_difference) + ") exceeds rtol " + fmt(req.options.rtol) +
+             " or its unloading is near capture";
+    else
+      why += "the linearized closed form is not within rtol " + fmt(req.options.rtol) +
+             " (its undamped difference in e alone exceeds it) or is undefined here";
+    reasons.push_back(why);
+  } else if (req.law == LawKind::linearized) {
+    reasons.push_back(
+        "the linearized law is undefined here (z_m < 2.25 z_y): run so that "
+        "the integrator names the failure");
+  } else {
+    reasons.push_back(law + " with a dashpot: no exact closed form; integrated");
+  }
+  add_integrator_reasons(req, d, reasons);
+  reasons.push_back(
+      "capture, if any, by the driver's criterion: the rebound still "
+      "attainable from the remaining energy, sqrt(w^2 + 2U), below "
+      "capture_cor = " +
+      fmt(req.options.capture_cor));
+  if (!req.auto_integrator)  // choose_integrator's reasons state it otherwise
+    reasons.push_back("estimated relative error of e, F_max, t_f: " + fmt(d.estimated_error) +
+                      " (the integrator's global error)");
+}
+}  // namespace
+
 ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const ImpactResult& r) {
   const SimulationRequest& req = v.request();
   const DerivedParameters& p = v.derived();
@@ -376,12 +424,7 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
   c.estimated_error = d.estimated_error;
   const std::string law(to_string(req.law));
   const std::string integrator(to_string(d.integrator));
-  auto integrator_words = [&] {
-    if (req.auto_integrator)
-      for (std::string& why : choose_integrator(req).reasons) c.reasons.push_back(std::move(why));
-    else
-      c.reasons.push_back("integrator " + integrator + " as requested (--integrator)");
-  };
+  auto integrator_words = [&] { add_integrator_reasons(req, d, c.reasons); };
   switch (d.route) {
     case ModelRoute::closed_form_elastoplastic:
       c.law = "closed-form elastoplastic (energy)";
@@ -441,35 +484,7 @@ ModelChoice explain(const ValidatedRequest& v, const ModelDecision& d, const Imp
     case ModelRoute::integrated:
       c.law = law + " (full model, integrated)";
       c.integrator = integrator;
-      if (req.law == LawKind::expression)
-        c.reasons.push_back("an expression law has no closed form: integrated");
-      else if (req.law == LawKind::elastoplastic) {
-        std::string why = "elastoplastic with a dashpot: no exact closed form; ";
-        if (d.linear_difference >= 0)
-          why += "the linearized closed form's estimated error 2 (1 + 10 zeta) D0 = " +
-                 fmt(kLinearSafety * (1 + kLinearZetaGrowth * p.zeta) * d.linear_difference) +
-                 " (D0 = " + fmt(d.linear_difference) + ") exceeds rtol " + fmt(req.options.rtol) +
-                 " or its unloading is near capture";
-        else
-          why += "the linearized closed form is not within rtol " + fmt(req.options.rtol) +
-                 " (its undamped difference in e alone exceeds it) or is undefined here";
-        c.reasons.push_back(why);
-      } else if (req.law == LawKind::linearized) {
-        c.reasons.push_back(
-            "the linearized law is undefined here (z_m < 2.25 z_y): run so that "
-            "the integrator names the failure");
-      } else {
-        c.reasons.push_back(law + " with a dashpot: no exact closed form; integrated");
-      }
-      integrator_words();
-      c.reasons.push_back(
-          "capture, if any, by the driver's criterion: the rebound still "
-          "attainable from the remaining energy, sqrt(w^2 + 2U), below "
-          "capture_cor = " +
-          fmt(req.options.capture_cor));
-      if (!req.auto_integrator)  // choose_integrator's reasons state it otherwise
-        c.reasons.push_back("estimated relative error of e, F_max, t_f: " + fmt(d.estimated_error) +
-                            " (the integrator's global error)");
+      add_integrated_reasons(req, p, d, c.reasons);
       break;
   }
   return c;
