@@ -1,5 +1,10 @@
 // Event location: the earliest signed zero crossing of g on a step's interpolant.
 //
+// Two levels. locate_first_crossing / solve_crossing: one scalar function g(t). locate_earliest:
+// a set of root functions g_i(x) of the state on one step (SUNDIALS' shape, CVodeRootInit: the
+// locator knows roots and directions, never what an event means), the earliest crossing among
+// them and which roots crossed there.
+//
 // An event is a scalar function g(t) of the solution and a direction. A crossing in a
 // subinterval [a, b] means g(a) is strictly on the pre-event side and g(b) is on the
 // post-event side or zero (rising: g(a) < 0 <= g(b); falling: g(a) > 0 >= g(b)). A zero exactly
@@ -15,8 +20,11 @@
 // unconverged time silently.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -108,6 +116,99 @@ std::optional<T> locate_first_crossing(G&& g, const T& t0, const T& t1, const T&
     ga = gb;
   }
   return std::nullopt;
+}
+
+// One root function of an event set: its direction, and whether it is monotone over any step
+// on which it is active (then the signs at the step's ends decide whether it crossed, and the
+// step need not be probed inside).
+struct RootSpec {
+  Direction direction = Direction::rising;
+  bool monotone = true;
+};
+
+// At most Capacity root functions active on one step.
+template <std::size_t Capacity>
+struct RootSet {
+  std::array<RootSpec, Capacity> roots{};
+  int size = 0;
+  void add(RootSpec r) { roots[size++] = r; }
+};
+
+// What locate_earliest found on one step.
+template <class T, std::size_t Capacity>
+struct EarliestCrossing {
+  std::optional<T> t;  // the earliest crossing in (t0, t1]; nullopt when no root crossed
+  int first = -1;      // the root that crossed at t (the lowest index among equal times)
+  // crossing times of the roots solved in the earliest bracketing subinterval (others nullopt)
+  std::array<std::optional<T>, Capacity> found{};
+  std::array<bool, Capacity> armed{};  // strictly on the pre-event side at t0
+};
+
+// The earliest crossing among the roots of `set` on one step [t0, t1] with end states x0, x1.
+//   g(i, x)               value of root i at state x
+//   interpolate(t, x)     the step's interpolant at t into x
+// When a non-monotone root is active and `solve` is true, the step is probed at
+// opt.samples equal subintervals (a root returning to its pre-event side within the step is
+// not missed); each probe state is interpolated once and shared by all roots. Only the earliest
+// bracketing subinterval is solved (solve_crossing), for the roots that cross in it. With
+// `solve` false a crossing is placed at t1 (detection at step ends, for demonstrations).
+// Throws EventLocationError as solve_crossing does.
+template <std::size_t Capacity, class T, class State, class Interpolate, class Root>
+EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, const T& t1,
+                                              const State& x1, Interpolate&& interpolate,
+                                              const RootSet<Capacity>& set, Root&& g,
+                                              const LocatorOptions& opt, bool solve) {
+  bool probe = false;
+  for (int i = 0; i < set.size; ++i) probe = probe || !set.roots[i].monotone;
+  const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
+  std::array<T, LocatorOptions::max_samples + 1> tp;
+  std::array<std::array<T, Capacity>, LocatorOptions::max_samples + 1> gp;
+  State s;
+  for (int k = 0; k <= n; ++k) {
+    tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
+    const State* xk = &s;
+    if (k == 0)
+      xk = &x0;
+    else if (k == n)
+      xk = &x1;
+    else
+      interpolate(tp[k], s);
+    for (int i = 0; i < set.size; ++i) gp[k][i] = g(i, *xk);
+  }
+  EarliestCrossing<T, Capacity> out;
+  std::array<int, Capacity> sub{};  // first subinterval in which root i is past its event
+  int first_sub = n + 1;
+  for (int i = 0; i < set.size; ++i) {
+    const Direction dir = set.roots[i].direction;
+    out.armed[i] = is_pre_event(gp[0][i], dir);
+    sub[i] = n + 1;
+    if (!out.armed[i]) continue;
+    for (int k = 1; k <= n; ++k)
+      if (!is_pre_event(gp[k][i], dir)) {
+        sub[i] = k;
+        break;
+      }
+    first_sub = std::min(first_sub, sub[i]);
+  }
+  for (int i = 0; i < set.size; ++i) {
+    if (sub[i] != first_sub || first_sub > n) continue;
+    const int k = sub[i];
+    if (solve) {
+      auto g_of_t = [&](T t) {
+        interpolate(t, s);
+        return g(i, s);
+      };
+      out.found[i] = solve_crossing(g_of_t, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i],
+                                    set.roots[i].direction, opt);
+    } else {
+      out.found[i] = t1;
+    }
+    if (!out.t || *out.found[i] < *out.t) {
+      out.t = out.found[i];
+      out.first = i;
+    }
+  }
+  return out;
 }
 
 }  // namespace ivv

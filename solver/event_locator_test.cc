@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -83,6 +84,68 @@ TEST(EventLocator, OutOfIterationsIsAnError) {
   }
   // the default budget converges on the same bracket
   EXPECT_NO_THROW(solve_crossing(g, 0.0, 2.0, g(0.0), g(2.0), Direction::falling));
+}
+
+// locate_earliest on a step whose interpolant is x(t) = (t, t^2 - 0.9 t + 0.18) on [0, 1]:
+// root 0 is x0 - 0.7 (rising, monotone), root 1 is x1 (falling, positive at both ends but
+// negative on (0.3, 0.6): two roots inside the step).
+using Pair = std::array<double, 2>;
+Pair pair_at(double t) {
+  return {t, t * t - 0.9 * t + 0.18};
+}
+struct PairStep {
+  Pair x0 = pair_at(0.0), x1 = pair_at(1.0);
+  void operator()(double t, Pair& x) const { x = pair_at(t); }
+};
+double pair_root(int i, const Pair& x) {
+  return i == 0 ? x[0] - 0.7 : x[1];
+}
+
+TEST(LocateEarliest, ProbesANonMonotoneRootAndReportsTheEarliestOfSeveral) {
+  const PairStep step;
+  RootSet<2> set;
+  set.add({Direction::rising, true});
+  set.add({Direction::falling, false});
+  const auto e =
+      locate_earliest(0.0, step.x0, 1.0, step.x1, step, set, pair_root, LocatorOptions{}, true);
+  ASSERT_TRUE(e.t);
+  EXPECT_EQ(e.first, 1);
+  EXPECT_NEAR(*e.t, 0.3, kRootTolerance);
+  EXPECT_TRUE(e.armed[0] && e.armed[1]);
+  // root 0 crosses only in a later probe subinterval: not solved
+  EXPECT_FALSE(e.found[0]);
+}
+
+TEST(LocateEarliest, AMonotoneDeclarationIsTrustedAtTheStepEnds) {
+  const PairStep step;
+  RootSet<2> set;
+  set.add({Direction::rising, true});
+  set.add({Direction::falling, true});  // wrongly declared monotone: the dip is not seen
+  const auto e =
+      locate_earliest(0.0, step.x0, 1.0, step.x1, step, set, pair_root, LocatorOptions{}, true);
+  ASSERT_TRUE(e.t);
+  EXPECT_EQ(e.first, 0);
+  EXPECT_NEAR(*e.t, 0.7, kRootTolerance);
+}
+
+TEST(LocateEarliest, WithoutSolvingACrossingIsPlacedAtTheStepEnd) {
+  const PairStep step;
+  RootSet<2> set;
+  set.add({Direction::rising, true});
+  const auto e =
+      locate_earliest(0.0, step.x0, 1.0, step.x1, step, set, pair_root, LocatorOptions{}, false);
+  ASSERT_TRUE(e.t);
+  EXPECT_EQ(*e.t, 1.0);
+}
+
+TEST(LocateEarliest, ARootAlreadyPastAtTheStepStartIsNotArmed) {
+  const PairStep step;
+  RootSet<2> set;
+  set.add({Direction::falling, true});  // x0 - 0.7 < 0 at t = 0: already past a falling root
+  const auto e =
+      locate_earliest(0.0, step.x0, 1.0, step.x1, step, set, pair_root, LocatorOptions{}, true);
+  EXPECT_FALSE(e.t);
+  EXPECT_FALSE(e.armed[0]);
 }
 
 }  // namespace

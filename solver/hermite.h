@@ -9,6 +9,8 @@
 
 #include <cstddef>
 
+#include "solver/steppers/step_state.h"
+
 namespace ivv {
 
 template <class State, class T>
@@ -30,7 +32,7 @@ void hermite_interpolate(const T& t0, const State& x0, const State& f0, const T&
 // (impact_driver.h) uses to refine events by re-stepping. A stepper derives from it, calls
 // begin_step() before taking a step from (t1, x1) and end_step() with the new point after.
 template <class System>
-class HermiteSteps {
+class HermiteSteps : public StepState<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
@@ -47,15 +49,17 @@ class HermiteSteps {
     hermite_interpolate(t0_, x0_, f0_, t1_, x1_, f1_, t, out);
   }
 
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
   const state_type& f0() const { return f0_; }
   const state_type& f1() const { return f1_; }
-  long steps() const { return steps_; }
 
  protected:
+  using Base = StepState<System>;
+  using Base::steps_;
+  using Base::t0_;
+  using Base::t1_;
+  using Base::x0_;
+  using Base::x1_;
+
   void begin_step() {
     t0_ = t1_;
     x0_ = x1_;
@@ -69,9 +73,7 @@ class HermiteSteps {
     ++steps_;
   }
 
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{}, f0_{}, f1_{};
-  long steps_ = 0;
+  state_type f0_{}, f1_{};
 };
 
 }  // namespace ivv

@@ -1,36 +1,22 @@
-// The phase loop shared by every integrator: integrate one smooth branch at a time, locate
-// every event on the step's interpolant, restart at each event.
+// The phase loop shared by every integrator: integrate one smooth branch at a time, locate the
+// events on each step's interpolant, restart at each event that changes the law's branch.
 //
-// Events (SPEC §1), all located by the shared locator of event_locator.h:
-//   yield             z = end of the loading segment (elastoplastic: z_y)     rising
-//   max_compression   dz/dt = 0: switch to unloading, record z_m and F_max    falling
-//   max_displacement  dalpha/dt = 0: record alpha_c (after z_m when damped)   falling
-//   peak_force        dF/dt = 0 (rate-dependent laws only, where F_max is not
-//                     at z_m)                                                 falling
-//   separation        F = 0 on the unloading branch: end of contact           falling
-//                     (z = 0 instead for a law that allows tension)
-// Onset is the initial state (alpha = 0, alpha_dot = v0). Capture is not an event but one of
-// two criteria checked after each unloading step: (1) exact, for a dashpot and a law whose
-// unloading curve has a slope floor (law.h): the state is inside the forward-invariant region
-// of ImpactSystem::capture_margin, where the impactor keeps approaching for ever, by more than
-// the accumulated error bound; then e = 0 exactly and the long creep towards z_f is not
-// integrated; (2) by energy, for any dissipative law: when the rebound the remaining energy
-// could still produce, sqrt(w^2 + 2 U), is below `capture_cor`, the impact ends with e = 0 and
-// e <= that bound.
-// Capture needs dissipation (a dashpot, or a rate-dependent law that carries its own): without
-// it the unloading branch is conservative, the
-// rebound speed is sqrt(2 U(z_m)) > 0 and the criterion is never applied (a bound that
-// falls below capture_cor there is round-off in U, not physics).
-// Grazing capture: with a dashpot, the force can reach zero while the impactor still
-// approaches by less than the integration error (alpha_dot = +1e-13 v0 near the capture
-// boundary). When that approach speed is within the accumulated error bound of
-// consistency.h the impact is captured (e = 0) with e <= that bound; beyond it, a failure.
+//   advance one step -> the active events (impact_events.h) -> locate_earliest on the step
+//   (event_locator.h) -> none: the capture criteria (capture.h) after an unloading step
+//                     -> some: the event state, then act on what each event that happened means
+//                        (record, next segment, begin unloading, end of contact) and restart
 //
-// Steppers with dense output are located on it directly. Steppers with a Hermite interpolant
-// (dense_output == false) have the estimate refined by re-stepping to it and re-interpolating
-// on the shrinking bracket until the time is converged to ~1e-14 relative; a refinement that
-// does not converge, a root finder out of iterations or a failed re-step ends the run as a
-// failure naming it.
+// The events, their root functions, directions and meanings are the table of impact_events.h;
+// the capture criteria (exact, by energy, grazing) are the units of capture.h. Onset is the
+// initial state (alpha = 0, alpha_dot = v0).
+//
+// Steppers with dense output are located on it directly, and a step goes on past an event
+// that changes no branch (max_displacement, peak_force: they only record the state): the rest
+// of the same step is scanned from the event on, rather than thrown away by a restart there.
+// Steppers with a Hermite interpolant (dense_output == false) have the estimate refined by
+// re-stepping to it and re-interpolating on the shrinking bracket until the time is converged
+// to ~1e-14 relative; a refinement that does not converge, a root finder out of iterations or
+// a failed re-step ends the run as a failure naming it.
 //
 // Every run that ends separated or captured passes the consistency check of consistency.h
 // (three CORs, energy ledger) unless options.check_consistency is false.
@@ -46,9 +32,11 @@
 #include <utility>
 #include <vector>
 
+#include "solver/capture.h"
 #include "solver/consistency.h"
 #include "solver/event_locator.h"
 #include "solver/hermite.h"
+#include "solver/impact_events.h"
 #include "solver/integrator_options.h"
 #include "solver/law.h"
 #include "solver/result.h"
@@ -210,335 +198,284 @@ ConsistencyMeasures consistency_measures(const NormalisedRun<System>& run, const
   return m;
 }
 
+// One impact integrated by Stepper: the phase loop of the comment at the top of this file.
+template <class Stepper, class System>
+class ImpactDriver {
+ public:
+  using T = typename System::value_type;
+  using state_type = typename System::state_type;
+  using Earliest = EarliestCrossing<T, ActiveEvents::capacity>;
+
+  ImpactDriver(System& sys, const IntegratorOptions& opt, const SampleObserver<System>* observer,
+               int samples_per_step)
+      : sys_(sys),
+        opt_(opt),
+        observer_(observer),
+        samples_per_step_(samples_per_step),
+        stepper_(opt) {}
+
+  NormalisedRun<System> run() {
+    begin();
+    try {
+      return phases();
+    } catch (const EventLocationError& err) {  // a root finder out of iterations
+      return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
+    }
+  }
+
+ private:
+  // The phase loop; EventLocationError from the locator or the refinement propagates to run().
+  NormalisedRun<System> phases() {
+    for (;;) {
+      if (!resume_ && !advance()) return fail(FailureKind::integrator, std::move(failure_));
+      resume_ = false;
+      const T t0 = scan_t0_, t1 = stepper_.t1();
+      const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
+      const Earliest earliest = locate(active);
+      if (!earliest.t) {
+        emit_samples(t0, t1);
+        if (sys_.branch.phase == Phase::unloading)
+          if (const auto e_bound = capture_after_step(sys_, stepper_.x1(), stepper_.steps(), opt_))
+            return finish(ImpactStatus::captured, t1, stepper_.x1(), *e_bound);
+        continue;
+      }
+      T te = *earliest.t;
+      state_type xe;
+      if (std::optional<std::string> why = event_state(active, earliest.first, te, xe))
+        return fail(FailureKind::integrator, std::move(*why));
+      emit_samples(t0, te);
+      const Fired fired = fire(active, earliest, te, xe);
+      if (fired.law_domain) return fail(FailureKind::law_domain, std::move(*fired.law_domain));
+      if (fired.separated) return separate(te, xe);
+      if constexpr (Stepper::dense_output) {
+        if (opt_.locate_events && !fired.branch_changed && te < t1) {
+          resume_ = true;  // scan the rest of this step from the event on
+          scan_t0_ = te;
+          scan_x0_ = xe;
+          continue;
+        }
+      }
+      stepper_.start(sys_, te, xe);
+    }
+  }
+
+  // What acting on the events of one time did.
+  struct Fired {
+    bool separated = false;
+    bool branch_changed = false;            // the law's next branch starts at the event
+    std::optional<std::string> law_domain;  // the law is undefined there: why
+  };
+
+  void begin() {
+    const state_type x = System::initial_state();
+    const T tau = 0;
+    sys_.branch = typename System::history_type{};
+    sys_.tension = law_allows_tension(sys_.law);
+    stepper_.start(sys_, tau, x);
+    // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
+    // and separation or capture, with room for a law with more segments
+    run_.events.reserve(8);
+    run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
+    if (observer_) (*observer_)(0.0, x, sys_);
+  }
+
+  // One accepted step; false when a limit is reached or the stepper fails (failure_ says why).
+  bool advance() {
+    if (stepper_.steps() >= opt_.max_steps) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
+         << " steps (tau = " << static_cast<double>(stepper_.t1()) << ")";
+      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
+      // dashpot time scale below the contact's), which an explicit stepper must resolve
+      if (System::has_dashpot && sys_.two_zeta > 2.0)
+        os << "; a stiff scene (zeta = " << sys_.two_zeta / 2
+           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
+      else
+        os << "; raise --max-steps or loosen --rtol";
+      failure_ = os.str();
+      return false;
+    }
+    if (stepper_.t1() > opt_.tau_max) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
+      failure_ = os.str();
+      return false;
+    }
+    const StepResult step = stepper_.step(sys_);
+    if (!step.ok) {
+      failure_ = step.reason;
+      return false;
+    }
+    scan_t0_ = stepper_.t0();
+    scan_x0_ = stepper_.x0();
+    return true;
+  }
+
+  // The earliest crossing of the active events on the part of the step being scanned.
+  Earliest locate(const ActiveEvents& active) {
+    auto interpolate = [this](const T& t, state_type& s) { stepper_.interpolate(sys_, t, s); };
+    auto root = [this, &active](int i, const state_type& s) {
+      return event_root(active.kinds[i], sys_, s);
+    };
+    return locate_earliest(scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate,
+                           active.roots, root, opt_.locator, opt_.locate_events);
+  }
+
+  // The state xe at the event time te: on the dense output, or refined by re-stepping (te
+  // moves to the refined time) for a stepper without one. A refinement that fails: why.
+  std::optional<std::string> event_state(const ActiveEvents& active, int first, T& te,
+                                         state_type& xe) {
+    if (!opt_.locate_events) {
+      xe = stepper_.x1();
+    } else if constexpr (Stepper::dense_output) {
+      stepper_.interpolate(sys_, te, xe);
+    } else {
+      const EventKind kind = active.kinds[first];
+      auto value = [this](EventKind k, const state_type& s) { return event_root(k, sys_, s); };
+      const Refinement<T> refined =
+          refine_on_restep(stepper_, sys_, kind, event_row(kind).direction, te, xe, value, opt_);
+      if (!refined.failure.empty()) return refined.failure;
+      te = refined.tau;  // events of other kinds are judged at the refined state (same step)
+    }
+    return std::nullopt;
+  }
+
+  // Acts on every armed event that has happened by te: coincident ones together (dz/dt = 0 and
+  // dalpha/dt = 0 without a dashpot), and any whose root is already past at the event state,
+  // which a restart there could no longer see.
+  Fired fire(const ActiveEvents& active, const Earliest& earliest, T te, const state_type& xe) {
+    const T coincide = T(1e-12) * (1 + (te < 0 ? -te : te));
+    Fired fired;
+    for (int i = 0; i < active.size(); ++i) {
+      const EventKind kind = active.kinds[i];
+      const Direction dir = active.roots.roots[i].direction;
+      const bool happened = i == earliest.first ||
+                            (earliest.found[i] && *earliest.found[i] <= te + coincide) ||
+                            (earliest.armed[i] && !is_pre_event(event_root(kind, sys_, xe), dir));
+      if (!happened) continue;
+      run_.events.push_back({kind, te, xe, sys_.force(xe)});
+      const EventAction action = event_row(kind).action;
+      fired.branch_changed = fired.branch_changed || changes_branch(action);
+      try {
+        act(action, te, xe);
+      } catch (const LawDomainError& err) {
+        fired.law_domain = err.what();
+        return fired;
+      }
+      if (action == EventAction::end_contact) fired.separated = true;
+    }
+    return fired;
+  }
+
+  // What an event means (impact_events.h), done at time te and state xe.
+  void act(EventAction action, T te, const state_type& xe) {
+    switch (action) {
+      case EventAction::next_segment:
+        sys_.law.next_segment(sys_.branch);
+        break;
+      case EventAction::begin_unloading:
+        if (!System::rate_dependent) {
+          run_.F_max = sys_.force(xe);
+          run_.tau_F_max = te;
+        }
+        run_.tau_z_max = te;
+        sys_.law.begin_unloading(sys_.branch, T(sys_.length * sys_.z(xe)));
+        break;
+      case EventAction::record_alpha_max:
+        run_.has_max_displacement = true;
+        found_.max_displacement = true;
+        run_.tau_alpha_max = te;
+        run_.x_alpha_max = xe;
+        run_.steps_alpha_max = stepper_.steps();
+        break;
+      case EventAction::record_peak_force:
+        found_.peak_force = true;
+        run_.F_max = sys_.force(xe);
+        run_.tau_F_max = te;
+        break;
+      case EventAction::end_contact:
+        break;
+    }
+  }
+
+  // F = 0 at (te, xe): a rebound, or, with the impactor still approaching, grazing capture
+  // (capture.h) or a failure that says so rather than return a negative COR.
+  NormalisedRun<System> separate(T te, const state_type& xe) {
+    if (!(xe[System::W] > 0)) return finish(ImpactStatus::separated, te, xe, 0.0);
+    const double w = static_cast<double>(xe[System::W]);
+    if (const auto e_bound = grazing_capture(System::has_dashpot, w, stepper_.steps(), opt_))
+      return finish(ImpactStatus::captured, te, xe, *e_bound);
+    std::ostringstream os;
+    os << Stepper::name << ": contact force reached zero at tau = " << static_cast<double>(te)
+       << " with the impactor still approaching (alpha_dot = +" << w
+       << " v0): the integration error exceeds the remaining force; tighten --rtol or use "
+          "another integrator";
+    return fail(FailureKind::integrator, os.str());
+  }
+
+  void emit_samples(T a, T b) {
+    if (!observer_) return;
+    state_type s;
+    for (int k = 1; k <= samples_per_step_; ++k) {
+      const T t = a + (b - a) * k / samples_per_step_;
+      stepper_.interpolate(sys_, t, s);
+      (*observer_)(static_cast<double>(t), s, sys_);
+    }
+  }
+
+  NormalisedRun<System> fail(FailureKind kind, std::string why) {
+    run_.status = ImpactStatus::failed;
+    run_.failure = kind;
+    run_.reason = std::move(why);
+    run_.tau_end = stepper_.t1();
+    run_.x_end = stepper_.x1();
+    run_.branch = sys_.branch;
+    run_.steps = stepper_.steps();
+    return std::move(run_);  // the run is done: move, no copy of its events
+  }
+
+  // A run that ends separated or captured at (tau_end, x_end), checked for consistency.
+  NormalisedRun<System> finish(ImpactStatus status, T tau_end, const state_type& x_end,
+                               double e_bound) {
+    run_.status = status;
+    run_.tau_end = tau_end;
+    run_.x_end = x_end;
+    run_.branch = sys_.branch;
+    run_.steps = stepper_.steps();
+    run_.e_bound = e_bound;
+    if (status == ImpactStatus::captured)
+      run_.events.push_back({EventKind::capture, tau_end, x_end, sys_.force(x_end)});
+    if (opt_.check_consistency) {
+      std::string why = consistency_failure(consistency_measures(run_, sys_), opt_, Stepper::name);
+      if (!why.empty()) {
+        run_.status = ImpactStatus::failed;
+        run_.failure = FailureKind::integrator;
+        run_.reason = std::move(why);
+      }
+    }
+    return std::move(run_);  // the run is done: move, no copy of its events
+  }
+
+  System& sys_;
+  const IntegratorOptions& opt_;
+  const SampleObserver<System>* observer_;
+  int samples_per_step_;
+  Stepper stepper_;
+  NormalisedRun<System> run_;
+  EventsFound found_;
+  // A dense-output step goes on past an event that changes no branch: `resume_` says so, and
+  // the scan of the current step starts at (scan_t0_, scan_x0_).
+  bool resume_ = false;
+  std::string failure_;  // why advance() could not take a step
+  T scan_t0_ = 0;
+  state_type scan_x0_{};
+};
+
 template <class Stepper, class System>
 NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
                                  const SampleObserver<System>* observer = nullptr,
                                  int samples_per_step = 4) {
-  using T = typename System::value_type;
-  using state_type = typename System::state_type;
-  NormalisedRun<System> run;
-  Stepper stepper(opt);
-  state_type x = System::initial_state();
-  T tau = 0;
-  sys.branch = typename System::history_type{};
-  sys.tension = law_allows_tension(sys.law);
-  stepper.start(sys, tau, x);
-  // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force and
-  // separation or capture, with room for a law with more segments
-  run.events.reserve(8);
-  run.events.push_back({EventKind::onset, tau, x, sys.force(x)});
-  if (observer) (*observer)(0.0, x, sys);
-  bool peak_fired = false;
-
-  // `monotone`: the event function cannot return to its pre-event side within a phase, so
-  // the signs at the step's ends decide whether it crossed and no probing is needed:
-  //   max_displacement  w' = -F <= 0 during contact
-  //   max_compression   while z' > 0, z'' = -F - 2 zeta F_z z' < 0 (and z' = w without dashpot)
-  //   separation        rate-independent laws: F falls with z, and z' < 0 on unloading (no
-  //                     reloading during one contact, SPEC §1); not so for Hunt-Crossley
-  // z - z_y (the spring may pass z_y and come back within one step near maximum compression)
-  // and dF/dt are not monotone and are probed.
-  struct Active {
-    EventKind kind;
-    Direction dir;
-    bool monotone;
-  };
-  auto event_value = [&sys](EventKind k, const state_type& s) -> T {
-    switch (k) {
-      case EventKind::yield:
-        return sys.z(s) - T(*sys.law.segment_end(sys.branch) / sys.length);
-      case EventKind::max_compression:
-        return sys.z_rate(s);
-      case EventKind::max_displacement:
-        return s[System::W];
-      case EventKind::peak_force:
-        return sys.force_rate(s);
-      default:  // separation: F = 0, or z = 0 for a law that allows tension
-        return sys.tension ? sys.z(s) : sys.force(s);
-    }
-  };
-  auto fail = [&](FailureKind kind, std::string why) {
-    run.status = ImpactStatus::failed;
-    run.failure = kind;
-    run.reason = std::move(why);
-    run.tau_end = stepper.t1();
-    run.x_end = stepper.x1();
-    run.branch = sys.branch;
-    run.steps = stepper.steps();
-    return std::move(run);  // the run is done: move, no copy of its events
-  };
-  // A run that ends separated or captured at (tau_end, x_end), checked for consistency.
-  auto finish = [&](ImpactStatus status, T tau_end, const state_type& x_end, double e_bound) {
-    run.status = status;
-    run.tau_end = tau_end;
-    run.x_end = x_end;
-    run.branch = sys.branch;
-    run.steps = stepper.steps();
-    run.e_bound = e_bound;
-    if (status == ImpactStatus::captured)
-      run.events.push_back({EventKind::capture, tau_end, x_end, sys.force(x_end)});
-    if (!opt.check_consistency)
-      return std::move(run);  // the run is done: move, no copy of its events
-    const std::string why = consistency_failure(consistency_measures(run, sys), opt, Stepper::name);
-    if (why.empty()) return std::move(run);  // the run is done: move, no copy of its events
-    run.status = ImpactStatus::failed;
-    run.failure = FailureKind::integrator;
-    run.reason = why;
-    return std::move(run);  // the run is done: move, no copy of its events
-  };
-  auto emit_samples = [&](T a, T b) {
-    if (!observer) return;
-    state_type s;
-    for (int k = 1; k <= samples_per_step; ++k) {
-      const T t = a + (b - a) * k / samples_per_step;
-      stepper.interpolate(sys, t, s);
-      (*observer)(static_cast<double>(t), s, sys);
-    }
-  };
-
-  // A dense-output stepper's step goes on past an event that changes no branch of the law
-  // (max_displacement, peak_force: they only record the state): the rest of the same step is
-  // scanned from the event on, rather than thrown away by a restart there. `resume` says so;
-  // scan_t0/scan_x0 are where the scan of the current step starts.
-  bool resume = false;
-  T scan_t0 = 0;
-  state_type scan_x0{};
-  for (;;) {
-    if (!resume) {
-      if (stepper.steps() >= opt.max_steps) {
-        std::ostringstream os;
-        os << Stepper::name << ": no separation after max_steps = " << opt.max_steps
-           << " steps (tau = " << static_cast<double>(stepper.t1()) << ")";
-        // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
-        // dashpot time scale below the contact's), which an explicit stepper must resolve
-        if (System::has_dashpot && sys.two_zeta > 2.0)
-          os << "; a stiff scene (zeta = " << sys.two_zeta / 2
-             << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
-        else
-          os << "; raise --max-steps or loosen --rtol";
-        return fail(FailureKind::integrator, os.str());
-      }
-      if (stepper.t1() > opt.tau_max) {
-        std::ostringstream os;
-        os << Stepper::name << ": no separation before tau_max = " << opt.tau_max;
-        return fail(FailureKind::integrator, os.str());
-      }
-      const StepResult step = stepper.step(sys);
-      if (!step.ok) return fail(FailureKind::integrator, step.reason);
-      scan_t0 = stepper.t0();
-      scan_x0 = stepper.x0();
-    }
-    resume = false;
-    const T t0 = scan_t0, t1 = stepper.t1();
-
-    // events active on this branch
-    std::array<Active, 4> active{};
-    int n_active = 0;
-    const bool loading = sys.branch.phase == Phase::loading;
-    // z - z_y is monotone over a loading step on which dz/dtau > 0 at both ends: while z' > 0,
-    // z'' < 0 (see `monotone` above), so z' cannot dip below 0 and come back within the step.
-    // Only a step that also reaches maximum compression needs the yield event probed (and,
-    // for a dense-output stepper, its interpolant built on every loading step otherwise).
-    if (loading && sys.law.segment_end(sys.branch)) {
-      const bool z_rising = sys.z_rate(scan_x0) > 0 && sys.z_rate(stepper.x1()) > 0;
-      active[n_active++] = {EventKind::yield, Direction::rising, z_rising};
-    }
-    if (loading) active[n_active++] = {EventKind::max_compression, Direction::falling, true};
-    if (!run.has_max_displacement)
-      active[n_active++] = {EventKind::max_displacement, Direction::falling, true};
-    if (System::rate_dependent && !peak_fired)
-      active[n_active++] = {EventKind::peak_force, Direction::falling, false};
-    if (!loading)
-      active[n_active++] = {EventKind::separation, Direction::falling,
-                            !System::rate_dependent && !sys.tension};
-
-    // Earliest crossing among them. When a non-monotone function is active the step is probed
-    // at `samples` equal subintervals (so that a function returning to its pre-event side
-    // within the step is not missed); each probe state is interpolated once and shared by all
-    // event functions. Only the earliest bracketing subinterval is then solved, for the
-    // functions that cross in it.
-    bool probe = false;
-    for (int i = 0; i < n_active; ++i) probe = probe || !active[i].monotone;
-    const int n = opt.locate_events && probe
-                      ? std::clamp(opt.locator.samples, 1, LocatorOptions::max_samples)
-                      : 1;
-    std::array<T, LocatorOptions::max_samples + 1> tp;
-    std::array<std::array<T, 4>, LocatorOptions::max_samples + 1> gp;
-    std::optional<T> t_event;
-    int first = -1;
-    std::array<std::optional<T>, 4> found{};
-    std::array<bool, 4> armed{};
-    state_type s;
-    int first_sub = n + 1;
-    std::array<int, 4> sub{};
-    for (int k = 0; k <= n; ++k) {
-      tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
-      const state_type* xk = &s;
-      if (k == 0)
-        xk = &scan_x0;
-      else if (k == n)
-        xk = &stepper.x1();
-      else
-        stepper.interpolate(sys, tp[k], s);
-      for (int i = 0; i < n_active; ++i) gp[k][i] = event_value(active[i].kind, *xk);
-    }
-    try {
-      for (int i = 0; i < n_active; ++i) {
-        armed[i] = is_pre_event(gp[0][i], active[i].dir);
-        sub[i] = n + 1;
-        if (!armed[i]) continue;
-        for (int k = 1; k <= n; ++k)
-          if (!is_pre_event(gp[k][i], active[i].dir)) {
-            sub[i] = k;
-            break;
-          }
-        first_sub = std::min(first_sub, sub[i]);
-      }
-      for (int i = 0; i < n_active; ++i) {
-        if (sub[i] != first_sub || first_sub > n) continue;
-        const int k = sub[i];
-        if (opt.locate_events) {
-          auto g = [&](T t) {
-            stepper.interpolate(sys, t, s);
-            return event_value(active[i].kind, s);
-          };
-          found[i] = solve_crossing(g, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i], active[i].dir,
-                                    opt.locator);
-        } else {
-          found[i] = t1;  // naive detection at the end of the step
-        }
-        if (!t_event || *found[i] < *t_event) {
-          t_event = found[i];
-          first = i;
-        }
-      }
-    } catch (const EventLocationError& err) {
-      return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
-    }
-
-    if (!t_event) {
-      emit_samples(t0, t1);
-      if constexpr (System::has_dashpot || System::rate_dependent) {  // something dissipates
-        if (!loading) {
-          // Exact capture: inside the invariant region of ImpactSystem::capture_margin, by more
-          // than the accumulated error bound, the impactor never turns back (e = 0 exactly).
-          const std::optional<double> margin = sys.capture_margin(stepper.x1());
-          if (opt.exact_capture && margin &&
-              *margin > accumulated_error_bound(stepper.steps(), opt))
-            return finish(ImpactStatus::captured, t1, stepper.x1(), 0.0);
-          const T bound2 = 2 * sys.recoverable_energy(stepper.x1());
-          if (bound2 < T(opt.capture_cor) * T(opt.capture_cor)) {
-            using std::sqrt;
-            // e <= sqrt(2 U + w^2) < capture_cor; the threshold is the bound the criterion
-            // guarantees when round-off makes the remaining energy read as zero
-            return finish(
-                ImpactStatus::captured, t1, stepper.x1(),
-                std::max(static_cast<double>(sqrt(bound2 > 0 ? bound2 : T(0))), opt.capture_cor));
-          }
-        }
-      }
-      continue;
-    }
-
-    // state at the event
-    T te = *t_event;
-    state_type xe;
-    if (!opt.locate_events) {
-      xe = stepper.x1();
-    } else if constexpr (Stepper::dense_output) {
-      stepper.interpolate(sys, te, xe);
-    } else {
-      Refinement<T> refined;
-      try {
-        refined = refine_on_restep(stepper, sys, active[first].kind, active[first].dir, te, xe,
-                                   event_value, opt);
-      } catch (const EventLocationError& err) {
-        return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
-      }
-      if (!refined.failure.empty()) return fail(FailureKind::integrator, refined.failure);
-      te = refined.tau;
-      // events of other kinds are judged at the refined state (same step)
-    }
-    emit_samples(t0, te);
-
-    // Fire every armed event that has happened by te: coincident ones together (dz/dt = 0 and
-    // dalpha/dt = 0 without a dashpot), and any whose function is already past at the event
-    // state, which a restart there could no longer see.
-    const T coincide = T(1e-12) * (1 + (te < 0 ? -te : te));
-    bool separated = false;
-    bool branch_changed = false;  // yield or max_compression: the law's next branch from te
-    for (int i = 0; i < n_active; ++i) {
-      const EventKind kind = active[i].kind;
-      const bool happened = i == first || (found[i] && *found[i] <= te + coincide) ||
-                            (armed[i] && !is_pre_event(event_value(kind, xe), active[i].dir));
-      if (!happened) continue;
-      run.events.push_back({kind, te, xe, sys.force(xe)});
-      switch (kind) {
-        case EventKind::yield:
-          sys.law.next_segment(sys.branch);
-          branch_changed = true;
-          break;
-        case EventKind::max_compression: {
-          const T F = sys.force(xe);
-          if (!System::rate_dependent) {
-            run.F_max = F;
-            run.tau_F_max = te;
-          }
-          run.tau_z_max = te;
-          branch_changed = true;
-          try {
-            sys.law.begin_unloading(sys.branch, T(sys.length * sys.z(xe)));
-          } catch (const LawDomainError& err) {
-            return fail(FailureKind::law_domain, err.what());
-          }
-          break;
-        }
-        case EventKind::max_displacement:
-          run.has_max_displacement = true;
-          run.tau_alpha_max = te;
-          run.x_alpha_max = xe;
-          run.steps_alpha_max = stepper.steps();
-          break;
-        case EventKind::peak_force:
-          peak_fired = true;
-          run.F_max = sys.force(xe);
-          run.tau_F_max = te;
-          break;
-        case EventKind::separation:
-          separated = true;
-          break;
-        default:
-          break;
-      }
-    }
-    if (separated && xe[System::W] > 0) {
-      // F = 0 while the impactor still approaches is no rebound: z would grow again and the
-      // spring reload. In the exact solution the force is still (barely) positive; the
-      // integration error has exceeded it. With a dashpot and an approach speed within the
-      // integration error this is the capture boundary: captured, e <= the error bound.
-      // Otherwise say so rather than return a negative COR.
-      const double graze_bound = accumulated_error_bound(stepper.steps(), opt);
-      if (System::has_dashpot && static_cast<double>(xe[System::W]) <= graze_bound)
-        return finish(ImpactStatus::captured, te, xe, graze_bound);
-      std::ostringstream os;
-      os << Stepper::name << ": contact force reached zero at tau = " << static_cast<double>(te)
-         << " with the impactor still approaching (alpha_dot = +"
-         << static_cast<double>(xe[System::W])
-         << " v0): the integration error exceeds the remaining force; tighten --rtol or use "
-            "another integrator";
-      return fail(FailureKind::integrator, os.str());
-    }
-    if (separated) return finish(ImpactStatus::separated, te, xe, 0.0);
-    if constexpr (Stepper::dense_output) {
-      if (opt.locate_events && !branch_changed && te < t1) {
-        resume = true;
-        scan_t0 = te;
-        scan_x0 = xe;
-        continue;
-      }
-    }
-    stepper.start(sys, te, xe);
-  }
+  return ImpactDriver<Stepper, System>(sys, opt, observer, samples_per_step).run();
 }
 
 }  // namespace ivv

@@ -18,6 +18,7 @@
 
 #include "solver/integrator_options.h"
 #include "solver/steppers/step_result.h"
+#include "solver/steppers/step_state.h"
 
 namespace ivv {
 
@@ -43,7 +44,7 @@ inline constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 
 }  // namespace dp45_tableau
 
 template <class System>
-class Dp45Stepper {
+class Dp45Stepper : public AdaptiveStepState<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
@@ -57,11 +58,7 @@ class Dp45Stepper {
   static constexpr std::string_view description =
       "hand-written Dormand-Prince 5(4) from its tableau, own dense output";
 
-  explicit Dp45Stepper(const IntegratorOptions& opt)
-      : rtol_(opt.rtol),
-        atol_(opt.atol),
-        fixed_(opt.fixed_step),
-        h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
+  explicit Dp45Stepper(const IntegratorOptions& opt) : AdaptiveStepState<System>(opt) {}
 
   void start(const System& sys, T t, const state_type& x) {
     t1_ = t;
@@ -95,11 +92,7 @@ class Dp45Stepper {
       for (std::size_t i = 0; i < n; ++i)
         x1_[i] = x0_[i] + h * (b1 * k1_[i] + b3 * k3_[i] + b4 * k4_[i] + b5 * k5_[i] + b6 * k6_[i]);
       sys(x1_, k7_, t0_ + h);
-      if (fixed_) {
-        t1_ = t0_ + h;
-        ++steps_;
-        return StepResult::success();
-      }
+      if (fixed_) return accept(h, h);
       T sum = 0;
       for (std::size_t i = 0; i < n; ++i) {
         err[i] =
@@ -117,12 +110,7 @@ class Dp45Stepper {
         continue;
       }
       const T factor = norm == 0 ? T(5) : std::clamp(T(0.9 * pow(norm, T(-0.2))), T(0.2), T(5));
-      if (norm <= 1) {
-        t1_ = t0_ + h;
-        h_ = h * factor;
-        ++steps_;
-        return StepResult::success();
-      }
+      if (norm <= 1) return accept(h, h * factor);
       h_ = h * factor;
       if (h_ <= 1e-14 * (1 + (t0_ < 0 ? -t0_ : t0_))) break;
     }
@@ -147,20 +135,18 @@ class Dp45Stepper {
     }
   }
 
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
-  long steps() const { return steps_; }
-
  private:
-  T rtol_, atol_;
-  bool fixed_;
-  T h_;
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{};
+  using Base = AdaptiveStepState<System>;
+  using Base::accept;
+  using Base::atol_;
+  using Base::fixed_;
+  using Base::h_;
+  using Base::rtol_;
+  using Base::t0_;
+  using Base::t1_;
+  using Base::x0_;
+  using Base::x1_;
   state_type k1_{}, k2_{}, k3_{}, k4_{}, k5_{}, k6_{}, k7_{};
-  long steps_ = 0;
 };
 
 }  // namespace ivv

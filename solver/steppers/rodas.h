@@ -56,6 +56,7 @@
 
 #include "solver/integrator_options.h"
 #include "solver/steppers/step_result.h"
+#include "solver/steppers/step_state.h"
 
 namespace ivv {
 
@@ -217,7 +218,7 @@ class RosenbrockMatrix {
 };
 
 template <class System>
-class Rodas4Stepper {
+class Rodas4Stepper : public AdaptiveStepState<System> {
  public:
   using state_type = typename System::state_type;
   using T = typename System::value_type;
@@ -241,11 +242,7 @@ class Rodas4Stepper {
   // attempts per step before giving up (each one shrinks h by at least 0.9)
   static constexpr int kMaxAttempts = 100;
 
-  explicit Rodas4Stepper(const IntegratorOptions& opt)
-      : rtol_(opt.rtol),
-        atol_(opt.atol),
-        fixed_(opt.fixed_step),
-        h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
+  explicit Rodas4Stepper(const IntegratorOptions& opt) : AdaptiveStepState<System>(opt) {}
 
   // Restart at (t, x), e.g. at an event; the step size carries over.
   void start(const System&, T t, const state_type& x) {
@@ -328,13 +325,17 @@ class Rodas4Stepper {
       out[i] = s1 * x0_[i] + th * (x1_[i] + s1 * (r_[0][i] + th * r_[1][i]));
   }
 
-  T t0() const { return t0_; }
-  T t1() const { return t1_; }
-  const state_type& x0() const { return x0_; }
-  const state_type& x1() const { return x1_; }
-  long steps() const { return steps_; }
-
  private:
+  using Base = AdaptiveStepState<System>;
+  using Base::accept;
+  using Base::atol_;
+  using Base::fixed_;
+  using Base::h_;
+  using Base::rtol_;
+  using Base::t0_;
+  using Base::t1_;
+  using Base::x0_;
+  using Base::x1_;
   // What ImpactSystem::jacobian writes into: m(i, j).
   struct JacobianView {
     std::array<std::array<T, N>, N> m;
@@ -379,13 +380,6 @@ class Rodas4Stepper {
     return StepResult::failure(std::string(name) + ": " + why);
   }
 
-  StepResult accept(T h, T next) {
-    t1_ = t0_ + h;
-    if (!fixed_) h_ = next;
-    ++steps_;
-    return StepResult::success();
-  }
-
   void prepare_dense() const {
     using namespace rodas4_tableau;
     for (std::size_t i = 0; i < N; ++i) {
@@ -400,15 +394,10 @@ class Rodas4Stepper {
     dense_ready_ = true;
   }
 
-  T rtol_, atol_;
-  bool fixed_;
-  T h_;
-  T t0_{}, t1_{};
-  state_type x0_{}, x1_{}, f0_{};
+  state_type f0_{};
   std::array<state_type, 6> u_{};  // the stages u_1 ... u_6 of the last step
   mutable std::array<state_type, 2> r_{};
   mutable bool dense_ready_ = false;
-  long steps_ = 0;
 };
 
 }  // namespace ivv
