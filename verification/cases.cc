@@ -13,6 +13,7 @@ const Registry& all_cases() {
     register_published_trend_cases(reg);
     register_example_cases(reg);
     register_dem_cases(reg);
+    register_validation_cases(reg);
     return reg;
   }();
   return registry;

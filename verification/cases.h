@@ -19,6 +19,7 @@ void register_stability_cases(Registry& reg);
 void register_published_trend_cases(Registry& reg);
 void register_example_cases(Registry& reg);
 void register_dem_cases(Registry& reg);
+void register_validation_cases(Registry& reg);
 
 // A published DEM benchmark scene shipped in reference_data/scenes/ (cases_dem.cc).
 struct DemBenchmarkScene {
