@@ -445,6 +445,13 @@ void fill_residuals(const Model& model, const std::vector<ModelPoint>& points,
 
 void fill_estimates(const std::vector<double>& theta, const Scaled& s, const Eigen::MatrixXd& cov,
                     double t, CalibrationResult& out) {
+  const std::size_t p = theta.size();
+  out.covariance.assign(p, std::vector<double>(p, 0.0));
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t j = 0; j < p; ++j)
+      if (out.parameters[i].identifiable && out.parameters[j].identifiable)
+        out.covariance[i][j] =
+            theta[i] * theta[j] * cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
   for (std::size_t j = 0; j < theta.size(); ++j) {
     ParameterEstimate& pe = out.parameters[j];
     pe.lower_bound = s.lower[j];
@@ -564,6 +571,8 @@ CalibrationResult calibrate(const CalibrationProblem& given, const CalibrationOp
     cov = *c;
   }
   fill_estimates(theta, s, cov, t, out);
+  for (Quantity q : kQuantities)
+    if (model.sigma_estimated(q)) out.sigma[static_cast<std::size_t>(q)] = model.sigma(q);
   for (Quantity q : kQuantities)
     if (model.sigma_estimated(q))
       out.estimated_noise.push_back(std::string(to_string(q)) +

@@ -39,6 +39,7 @@
 // number that looks like an estimate.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -98,12 +99,16 @@ struct CalibrationResult {
   std::string failure;  // why, when !ok
   std::vector<ParameterEstimate> parameters;
   std::vector<std::vector<double>> correlation;  // p x p
-  std::vector<std::string> unidentifiable;       // sentences naming parameters and combinations
+  // Covariance of theta [unit_i unit_j], identifiable parameters only (zero rows and columns
+  // for the unidentifiable ones, which prediction holds at their start values).
+  std::vector<std::vector<double>> covariance;
+  std::vector<std::string> unidentifiable;  // sentences naming parameters and combinations
   double chi2 = 0.0;
-  int points = 0;                            // residuals (n)
-  int dof = 0;                               // n - p_identifiable
-  std::optional<double> p_value;             // absent when a sigma was estimated
-  std::vector<std::string> estimated_noise;  // e.g. "e: sigma = 0.0123 estimated from residuals"
+  int points = 0;                              // residuals (n)
+  int dof = 0;                                 // n - p_identifiable
+  std::optional<double> p_value;               // absent when a sigma was estimated
+  std::vector<std::string> estimated_noise;    // e.g. "e: sigma = 0.0123 estimated from residuals"
+  std::array<std::optional<double>, 3> sigma;  // per Quantity: the estimated sigma, if any
   std::vector<Residual> residuals;
   double rtol = 0.0;          // the tolerance rule's choice (validation/model_runs.h)
   double stated_error = 0.0;  // the largest stated integration error of e at the estimate

@@ -1,31 +1,13 @@
 #include "validation/synthetic.h"
 
 #include <cmath>
-#include <numbers>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 
 #include "validation/model_runs.h"
+#include "validation/normal.h"
 
 namespace ivv::validation {
-namespace {
-
-// Standard normal deviates by Box-Muller on 53-bit uniforms in (0, 1].
-class Normal {
- public:
-  explicit Normal(std::uint64_t seed) : rng_(seed) {}
-  double operator()() {
-    const double u1 = uniform(), u2 = uniform();
-    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
-  }
-
- private:
-  double uniform() { return (static_cast<double>(rng_() >> 11) + 1.0) * 0x1.0p-53; }
-  std::mt19937_64 rng_;
-};
-
-}  // namespace
 
 std::vector<double> log_velocities(double lo, double hi, int n) {
   std::vector<double> v;
@@ -50,7 +32,7 @@ MeasuredData synthetic_data(const SimulationRequest& request, const SyntheticSpe
   d.provenance.push_back(os.str());
   d.has_quantity[0] = true;
   d.has_uncertainty[0] = spec.state_uncertainty;
-  Normal normal(spec.seed);
+  StandardNormal normal(spec.seed);
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!points[i].result.ok())
       throw std::runtime_error(

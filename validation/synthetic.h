@@ -5,9 +5,8 @@
 //
 // The model runs with --model auto at rtol = kSyntheticRtol (stated error <= 300 rtol = 3e-10
 // in e, validation/model_runs.h), so "noise-free" data carry at most that error.
-// Noise: e_i = S(v0_i) + u_e * N(0, 1), from std::mt19937_64(seed) and the Box-Muller
-// transform written here (std::normal_distribution's algorithm is not specified by the
-// standard, so the data would differ between standard libraries); e is clamped at 0.
+// Noise: e_i = S(v0_i) + u_e * N(0, 1), N from validation/normal.h (seeded, the same with
+// every standard library); e is clamped at 0.
 #pragma once
 
 #include <cstdint>
