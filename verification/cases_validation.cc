@@ -8,6 +8,7 @@
 
 #include "validation/calibration.h"
 #include "validation/comparison.h"
+#include "validation/example.h"
 #include "validation/model_runs.h"
 #include "validation/parameters.h"
 #include "validation/synthetic.h"
@@ -213,6 +214,29 @@ Outcome wrong_model_ranked() {
   return at_least(kk ? delta : -delta, 0.0, "ranking by AIC:\n" + c.table());
 }
 
+// The shipped example: each generating value inside the printed 95 % interval.
+Outcome shipped_recovery() {
+  const ShippedExample& x = shipped_example();
+  if (!x.fit.ok) return at_most(NAN, 1.96, x.fit.failure);
+  double worst = 0;
+  for (const auto& p : x.fit.parameters) {
+    const double truth = p.name == "c" ? kExampleTruthC : kExampleTruthYield;
+    worst = std::max(worst, std::abs(p.value - truth) / (p.upper95 - p.value) * 1.96);
+  }
+  return at_most(worst, 1.959963984540054,
+                 "largest |estimate - generating value| in standard errors (the interval's "
+                 "half-width is 1.96 SE): " +
+                     x.fit.brief());
+}
+
+Outcome shipped_validation() {
+  const ShippedExample& x = shipped_example();
+  if (!x.validation.prediction.ok()) return at_most(NAN, 1, "the prediction failed");
+  // 8 held-back points of the generating model: each exceeds 2 u_val with P ~ 5 %, so two or
+  // more do with P = 5.7 %, three or more with P = 0.6 %: at most 2.
+  return at_most(x.validation.exceeding, 2, x.validation.summary());
+}
+
 }  // namespace
 
 void register_validation_cases(Registry& reg) {
@@ -244,6 +268,16 @@ void register_validation_cases(Registry& reg) {
            "AIC differences: the measured value is the runner-up's Delta AIC (negative when KK is "
            "not first)",
            false, wrong_model_ranked});
+  reg.add(
+      {"validation.example.recovery",
+       "Shipped example (synthetic): the generating c and S_y lie in the printed 95 % intervals", T,
+       "the interval itself: |estimate - truth| <= 1.96 SE (fails with P = 5 % per parameter "
+       "for a correct method; the shipped data are fixed, so the outcome is too)",
+       false, shipped_recovery});
+  reg.add({"validation.example.vv20",
+           "Shipped example: the V&V 20 comparison with the held-back points flags at most 2 of 8",
+           T, "binomial: 3 or more of 8 points beyond 2 u_val has P = 0.6 % for a right model",
+           false, shipped_validation});
 }
 
 }  // namespace ivv::verification
