@@ -48,5 +48,7 @@ std::unique_ptr<Command> make_verify(CLI::App& app);
 std::unique_ptr<Command> make_report(CLI::App& app);
 std::unique_ptr<Command> make_check_law(CLI::App& app);
 std::unique_ptr<Command> make_bench(CLI::App& app);
+std::unique_ptr<Command> make_calibrate(CLI::App& app);
+std::unique_ptr<Command> make_predict(CLI::App& app);
 
 }  // namespace ivv::app

@@ -27,8 +27,9 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "help for every subcommand");
 
   std::vector<std::unique_ptr<Command>> commands;
-  for (auto make : {make_simulate, make_sweep, make_scene_show, make_integrators, make_laws,
-                    make_fit_hc, make_verify, make_report, make_check_law, make_bench})
+  for (auto make :
+       {make_simulate, make_sweep, make_scene_show, make_integrators, make_laws, make_fit_hc,
+        make_verify, make_report, make_check_law, make_bench, make_calibrate, make_predict})
     commands.push_back(make(app));
 
   try {

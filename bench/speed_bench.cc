@@ -1,5 +1,10 @@
 #include "bench/speed_bench.h"
 
+#include "validation/calibration_file.h"
+#include "validation/parameters.h"
+#include "validation/prediction.h"
+#include "validation/synthetic.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -100,6 +105,57 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
   }
   return t;
 }
+
+// Issue 19's speed figures: a two-parameter calibration (c, S_y of the damped paper scene)
+// to 50 synthetic impacts on one thread, and a 1e4-draw prediction band over 100 speeds on two.
+void calibration_targets(const BenchOptions& options, BenchReport& rep,
+                         const std::function<void(const std::string&)>& say) {
+  using namespace validation;
+  if (say) say("calibration: 2-parameter fit to 50 points, 1e4-draw band over 100 speeds");
+  SimulationRequest truth;
+  truth.scene = paper_scene();
+  truth.scene.damping = Damping::coefficient(11440.0);
+  truth.auto_integrator = true;
+  const MeasuredData data =
+      synthetic_data(truth, {log_velocities(0.3, 5.0, 50), 0.01, true, true, 1, "bench"});
+  CalibrationProblem problem{truth, data};
+  set_parameter(problem.request, "c", 8000.0);
+  set_parameter(problem.request, "yield_strength", 3e8);
+  CalibrationOptions o;
+  o.fit = {"c", "yield_strength"};
+  o.threads = 1;
+  o.profile = false;
+  std::vector<double> runs;
+  CalibrationResult fit;
+  for (int k = 0; k < 3; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fit = calibrate(problem, o);
+    runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(runs.begin(), runs.end());
+  rep.targets.push_back(target(
+      "2-parameter calibration to 50 points, one thread", 1.0, "s", fit.ok ? runs[1] : kNaN,
+      "c and S_y of the damped paper scene from synthetic data (u_e = 0.01), start 30-50 % off, "
+      "linearised intervals (profile intervals off); median of 3; " +
+          std::to_string(fit.model_evaluations) + " impacts per fit"));
+  if (!fit.ok) return;
+  PredictionOptions po;
+  po.samples = options.quick ? 1000 : 10000;
+  po.threads = 2;
+  const double scale = options.quick ? 10.0 : 1.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Prediction band =
+      predict(calibrated_model(problem, fit), log_velocities(0.3, 5.0, 100), po);
+  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rep.targets.push_back(
+      target("1e4-draw prediction band over 100 speeds, two threads", 10.0, "s",
+             band.ok() ? t * scale : kNaN,
+             std::string(options.quick ? "1e3 draws scaled by 10; " : "") +
+                 "Monte Carlo over the fitted covariance, --model auto at rtol 1e-10 (" +
+                 std::to_string(po.samples * 100) + " impacts)"));
+}
+
+}  // namespace
 
 // ---- issue 20's targets -------------------------------------------------------------------
 
@@ -410,6 +466,7 @@ BenchReport run_bench(const BenchOptions& options,
   add_peer_ratio_targets(rep);
   add_map_targets(rep, options.quick);
   add_auto_integrator_target(rep, options.quick, timing);
+  calibration_targets(options, rep, progress);
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   return rep;
 }

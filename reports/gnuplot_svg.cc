@@ -59,7 +59,11 @@ std::string data_block(const Series& s, const Plot& p) {
     if (gap) out += "\n";  // a blank line breaks the curve
     gap = false;
     any = true;
-    std::snprintf(line, sizeof line, "%.10g %.10g\n", s.x[i], s.y[i]);
+    if (s.style == Series::Style::error_bars)
+      std::snprintf(line, sizeof line, "%.10g %.10g %.10g\n", s.x[i], s.y[i],
+                    i < s.y_error.size() ? s.y_error[i] : 0.0);
+    else
+      std::snprintf(line, sizeof line, "%.10g %.10g\n", s.x[i], s.y[i]);
     out += line;
   }
   return any ? out : std::string();
@@ -81,6 +85,8 @@ std::string style(Series::Style s, int lt) {
              " ps 0.55";
     case Series::Style::dashed:
       return "with lines" + t + " lw 2 dt (8,5)";
+    case Series::Style::error_bars:
+      return "with yerrorbars" + t + " pt " + std::to_string(kFilled[(lt - 1) % 8]) + " ps 0.5";
   }
   return "with lines" + t;
 }
@@ -173,7 +179,8 @@ std::string gnuplot_script(const Plot& plot, SvgSize size) {
     if (body.empty()) continue;
     const std::string name = "$d" + std::to_string(i);
     gp << name << " << EOD\n" << body << "EOD\n";
-    clauses.push_back(name + " using 1:2 " + style(s.style, static_cast<int>(i % 8) + 1) +
+    const char* columns = s.style == Series::Style::error_bars ? " using 1:2:3 " : " using 1:2 ";
+    clauses.push_back(name + columns + style(s.style, static_cast<int>(i % 8) + 1) +
                       " title " + quoted(s.label));
   }
   if (clauses.empty())

@@ -9,6 +9,7 @@ packages=(
   libboost1.81-dev libboost-math1.81-dev  # odeint, math, multiprecision; 1.81: its uBLAS
                                           # (odeint rosenbrock4) compiles as C++20, 1.74 does not
   libeigen3-dev
+  libceres-dev                        # calibration (ivv calibrate): least squares, covariance
   libgsl-dev                          # odeiv2, integration
   libgtest-dev libgmock-dev
   libbenchmark-dev

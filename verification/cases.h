@@ -21,6 +21,7 @@ void register_example_cases(Registry& reg);
 void register_dem_cases(Registry& reg);
 void register_structure_cases(Registry& reg);
 void register_conformance_cases(Registry& reg);
+void register_validation_cases(Registry& reg);
 
 // A published DEM benchmark scene shipped in reference_data/scenes/ (cases_dem.cc).
 struct DemBenchmarkScene {

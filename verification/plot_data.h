@@ -8,10 +8,11 @@
 namespace ivv::verification {
 
 struct Series {
-  enum class Style { lines, points, linespoints, dashed };
+  enum class Style { lines, points, linespoints, dashed, error_bars };
   std::string label;
   std::vector<double> x, y;
   Style style = Style::lines;
+  std::vector<double> y_error = {};  // error_bars: half-length of each bar (y units)
 };
 
 struct Plot {

@@ -14,7 +14,8 @@ namespace ivv::verification {
 namespace {
 constexpr std::array kTiers = {Tier::analytic,     Tier::cross_implementation,
                                Tier::conservation, Tier::published_trend,
-                               Tier::convergence,  Tier::stability};
+                               Tier::convergence,  Tier::stability,
+                               Tier::validation};
 }  // namespace
 
 std::span<const Tier> all_tiers() {
@@ -35,6 +36,8 @@ std::string_view to_string(Tier t) {
       return "convergence";
     case Tier::stability:
       return "stability";
+    case Tier::validation:
+      return "validation";
   }
   return "?";
 }

@@ -24,7 +24,8 @@ enum class Tier {
   conservation,
   published_trend,
   convergence,
-  stability
+  stability,
+  validation  // calibration against (synthetic) measurements: recovery, coverage, ranking
 };
 std::span<const Tier> all_tiers();
 std::string_view to_string(Tier t);
