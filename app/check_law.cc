@@ -37,7 +37,7 @@ int list_functions() {
 
 int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& command_line) {
   if (f.scene.empty()) f.scene = "paper";
-  if (f.force.empty() && !c.law_given && f.params.empty() && !f.hc_k && !f.hc_mu)
+  if (!f.force && !c.law_given && f.params.empty() && !f.hc_k && !f.hc_mu)
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
   const SimulationRequest req = to_request(to_options(f));

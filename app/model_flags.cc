@@ -1,8 +1,10 @@
 #include "app/model_flags.h"
 
 #include <limits>
+#include <utility>
 
 #include "app/cli_args.h"
+#include "scene/input_error.h"
 
 namespace ivv::app {
 namespace {
@@ -78,7 +80,11 @@ RequestOptions to_options(const ModelFlags& f) {
   o.lambda = number(f.lambda, "--lambda");
   o.no_dashpot = f.no_dashpot;
   o.law = f.law;
-  o.expression = {f.force, f.unload, f.allow_tension};
+  for (const auto& [text, flag] :
+       {std::pair{&f.force, "--force"}, std::pair{&f.unload, "--unload"}})
+    if (*text && text->value().find_first_not_of(" \t") == std::string::npos)
+      throw InputError(flag, "is empty; give the force [N] as an expression, e.g. 'K_h*z^1.5'");
+  o.expression = {f.force.value_or(""), f.unload.value_or(""), f.allow_tension};
   o.integrator = f.integrator;
   o.model = f.model;
   o.rtol = number(f.rtol, "--rtol");

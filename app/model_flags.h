@@ -24,7 +24,8 @@ struct ModelFlags {
   std::optional<std::string> rtol, atol, dt, max_steps;
   std::optional<std::string> hc_k, hc_mu;
   std::vector<std::string> params;  // NAME=VALUE
-  std::string force, unload;        // expression law
+  // expression law; given but empty is bad input (not "no expression")
+  std::optional<std::string> force, unload;
   bool allow_tension = false;
 };
 
