@@ -44,13 +44,21 @@ struct SweepFlags {
   bool resume = false;
   bool quiet = false;
   int threads = 0;
+  bool zeta_given = false;
 };
 
 int run_sweep(const ModelFlags& f, const SweepFlags& sf, const std::string& command) {
   SweepRequest req;
   req.base = to_request(to_options(f));
   req.velocities = parse_grid(sf.v0_grid, "--v0", sf.log);
-  req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);
+  if (sf.zeta_given)
+    req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);
+  else if (req.base.scene.damping.kind != Damping::Kind::none)
+    req.scene_dashpot = true;  // every point keeps the scene's own dashpot (c, lambda, structure)
+  else
+    throw InputError("--zeta",
+                     "required: the scene has no dashpot of its own (LO:HI:N or a,b,c; 0 = no "
+                     "dashpot)");
   req.threads = sf.threads;
   resolve_output_path(sf.out_path, "--out");  // a bad output path fails before the sweep runs
   validate(req);  // the one validation of a sweep, before any file is touched
@@ -142,8 +150,9 @@ class Sweep final : public Command {
     add_model_flags(cmd, flags_, false);
     cmd.add_option("--v0", sf_.v0_grid, "velocities [m/s]: LO:HI:N or a,b,c")->required();
     cmd.add_flag("--log", sf_.log, "logarithmic spacing of the LO:HI:N velocity grid");
-    cmd.add_option("--zeta", sf_.zeta_grid, "damping ratios: LO:HI:N or a,b,c (0 = no dashpot)")
-        ->required();
+    cmd.add_option("--zeta", sf_.zeta_grid,
+                   "damping ratios: LO:HI:N or a,b,c (0 = no dashpot); absent: the scene's own "
+                   "dashpot at every point");
     cmd.add_option("--out", sf_.out_path, "output CSV (the sidecar goes beside it: NAME.json)")
         ->required();
     cmd.add_option("--threads", sf_.threads, "worker threads per process (0 = all cores)")
@@ -153,7 +162,10 @@ class Sweep final : public Command {
     cmd.add_flag("-q,--quiet", sf_.quiet, "no progress on stderr");
   }
 
-  int run(const Invocation& inv) override { return run_sweep(flags_, sf_, inv.command_line); }
+  int run(const Invocation& inv) override {
+    sf_.zeta_given = cli().count("--zeta") > 0;
+    return run_sweep(flags_, sf_, inv.command_line);
+  }
 
  private:
   ModelFlags flags_;

@@ -65,52 +65,6 @@ nlohmann::json structure_json(const Scene& s) {
   };
 }
 
-std::string dashpot_text(const Scene& s, const DerivedParameters& p) {
-  std::ostringstream os;
-  os.precision(6);
-  if (s.damping.kind == Damping::Kind::structure) {
-    const Structure& st = s.damping.structure;
-    const StructureDashpot d =
-        structure_dashpot(st, s.target_youngs_modulus, s.target_poisson_ratio);
-    os << "structure " << structure_kind_name(st.kind) << ", rho = " << st.density << " kg/m^3";
-    if (st.has_plate()) os << ", h = " << st.thickness << " m";
-    if (st.has_bar()) os << ", A = " << st.area << " m^2";
-    os << "\n";
-    if (st.has_plate()) {
-      os << "  D       = " << d.bending_stiffness << " N m"
-         << (d.bending_stiffness_given ? "  (bending_stiffness, given)"
-                                       : "  = E h^3/(12 (1 - nu^2))")
-         << "\n"
-         << "  c_plate = " << d.c_plate << " N s/m  = 8 sqrt(rho h D)\n";
-    }
-    if (st.has_bar()) os << "  c_bar   = " << d.c_bar << " N s/m  = A sqrt(E rho)\n";
-    if (st.has_plate() && st.has_bar())
-      os << "  c       = " << d.c << " N s/m  (series: 1/c = 1/c_plate + 1/c_bar)\n";
-  }
-  if (!p.has_dashpot()) {
-    os << "  no dashpot (c = inf, zeta = 0)\n";
-    return os.str();
-  }
-  os << "  c      = " << p.c << " N s/m";
-  switch (s.damping.kind) {
-    case Damping::Kind::ratio:
-      os << "  = sqrt(m K_y)/(2 zeta)";
-      break;
-    case Damping::Kind::zener_lambda:
-      os << "  = m^{3/5} K_h^{2/5} v0^{1/5}/lambda";
-      break;
-    case Damping::Kind::structure:
-      os << "  (from the structure)";
-      break;
-    default:
-      break;
-  }
-  os << "\n";
-  if (p.has_yield()) os << "  zeta   = " << p.zeta << "  = sqrt(m K_y)/(2 c)\n";
-  os << "  lambda = " << p.zener_lambda << "  = m^{3/5} K_h^{2/5} v0^{1/5}/c (Zener 1941)\n";
-  return os.str();
-}
-
 nlohmann::json result_json(const ImpactResult& r) {
   nlohmann::json events = nlohmann::json::array();
   for (const auto& ev : r.events) {

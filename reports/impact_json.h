@@ -17,9 +17,6 @@ nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
 nlohmann::json result_json(const ImpactResult& r);
 // The [structure] of a scene: each element's dashpot, the series c, the formula; null without.
 nlohmann::json structure_json(const Scene& scene);
-// Lines for `scene show`: the structure's elements (c_i with formulas), then c, zeta (with a
-// yield strength) and Zener's lambda, each with the formula it came from.
-std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
 // {"scene": ..., "request": ..., "result": ...}
 // The law of a request: its summary, every parameter in use (defaults included) and, for an
 // expression law, its expressions and contact end.

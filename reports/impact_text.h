@@ -17,4 +17,8 @@ std::string impact_summary(const SimulationRun& run);
 // What `ivv scene show` prints: the scene's inputs and every derived parameter with its unit.
 std::string scene_summary(const Scene& scene);
 
+// Lines for `scene show`: the structure's elements (c_i with formulas), then c, zeta (with a
+// yield strength) and Zener's lambda, each with the formula it came from.
+std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
+
 }  // namespace ivv
