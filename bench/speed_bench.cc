@@ -155,8 +155,6 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
                  std::to_string(po.samples * 100) + " impacts)"));
 }
 
-}  // namespace
-
 // ---- issue 20's targets -------------------------------------------------------------------
 
 // ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),

@@ -321,6 +321,10 @@ std::string damping_label(const Damping& d) {
       return "zeta = " + fmt(d.value);
     case Damping::Kind::coefficient:
       return "c = " + fmt(d.value) + " N s/m";
+    case Damping::Kind::zener_lambda:
+      return "lambda = " + fmt(d.value);
+    case Damping::Kind::structure:
+      return "the structure's dashpot";
   }
   return "?";
 }
