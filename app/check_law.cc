@@ -102,6 +102,8 @@ class CheckLaw final : public Command {
   }
 
   int run(const Invocation& inv) override {
+    if (functions_) return list_functions();
+    check_.law_given = cli().count("--law") > 0;
     return run_check_law(flags_, check_, inv.command_line);
   }
 
