@@ -5,6 +5,9 @@
 #   make fuzz    - libFuzzer (clang) on the scene parser and the command-line number parsing
 PRESET ?= release
 JOBS   ?= $(shell nproc)
+# ccache, where installed, makes a rebuild of unchanged sources a cache hit (optional: the
+# build does not need it; export CMAKE_CXX_COMPILER_LAUNCHER= to turn it off)
+export CMAKE_CXX_COMPILER_LAUNCHER ?= $(shell command -v ccache 2>/dev/null)
 BUILD_DIR = $(if $(filter release,$(PRESET)),build,build-$(PRESET))
 
 .PHONY: all deps configure build test test-all report asan format clean fuzz
