@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "solver/format.h"
+
 namespace ivv {
 namespace {
 
@@ -19,11 +21,9 @@ double undamped_z_max(const Scene& s, const DerivedParameters& p) {
   return p.z_y + d;
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(3);
-  os << v;
-  return os.str();
+// Three significant digits: enough for a reason, short enough to read (solver/format.h).
+std::string fmt3(double v) {
+  return fmt(v, 3);
 }
 
 // Without a yield strength (zeta and z_y are NaN there, issue 21 item 6) the law runs in the
@@ -56,14 +56,14 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
   if (dashpot && !p.has_yield()) {
     c.stiffness_ratio = stiffness_ratio(req.scene, p);
     c.reasons.push_back(
-        "stiffness ratio S = 1.5 K_h z_mH^{3/2}/(c v0) = " + fmt(c.stiffness_ratio) +
+        "stiffness ratio S = 1.5 K_h z_mH^{3/2}/(c v0) = " + fmt3(c.stiffness_ratio) +
         " (dashpot relaxation rate at the Hertz maximum compression z_mH over "
         "the loading rate v0/z_mH: the scene has no yield strength)");
   } else if (dashpot) {
     const double k_max = std::max(1.0, std::sqrt(undamped_z_max(req.scene, p) / p.z_y));
     c.stiffness_ratio = stiffness_ratio(req.scene, p);
-    c.reasons.push_back("stiffness ratio S = 2 zeta k_max = 2 x " + fmt(p.zeta) + " x " +
-                        fmt(k_max) + " = " + fmt(c.stiffness_ratio) +
+    c.reasons.push_back("stiffness ratio S = 2 zeta k_max = 2 x " + fmt3(p.zeta) + " x " +
+                        fmt3(k_max) + " = " + fmt3(c.stiffness_ratio) +
                         " (dashpot relaxation rate over the loading rate; k_max = "
                         "sqrt(z_m/z_y) from the undamped z_m)");
   } else {
@@ -75,20 +75,20 @@ IntegratorChoice choose_integrator(const SimulationRequest& req) {
   c.integrator = auto_integrator(req.scene, p);
   const bool implicit = traits(c.integrator).implicit;
   if (implicit) {
-    c.reasons.push_back("S > " + fmt(kStiffnessThreshold) +
+    c.reasons.push_back("S > " + fmt3(kStiffnessThreshold) +
                         ": stiff, an explicit method would be held to |h lambda| = O(1) by "
                         "stability; implicit rodas4 (Rosenbrock 4(3), L-stable, dense output)");
   } else {
-    c.reasons.push_back("S <= " + fmt(kStiffnessThreshold) +
+    c.reasons.push_back("S <= " + fmt3(kStiffnessThreshold) +
                         ": not stiff; the eighth-order explicit dop853 (dense output) needs "
                         "the fewest evaluations at rtol " +
-                        fmt(req.options.rtol));
+                        fmt3(req.options.rtol));
   }
   const double factor = implicit ? kAutoErrorFactorImplicit : kAutoErrorFactorExplicit;
   c.estimated_error = factor * req.options.rtol;
   c.reasons.push_back("estimated error of e (in v0), F_max, z_max, and of t_f times e: " +
-                      fmt(factor) + " rtol = " + fmt(c.estimated_error) + " (the global error of " +
-                      std::string(to_string(c.integrator)) +
+                      fmt3(factor) + " rtol = " + fmt3(c.estimated_error) +
+                      " (the global error of " + std::string(to_string(c.integrator)) +
                       " measured on the paper grid, the Hertz law and the stiff scene, checked "
                       "by the autochoice cases)");
   return c;

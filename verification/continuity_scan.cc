@@ -5,6 +5,8 @@
 #include <sstream>
 #include <vector>
 
+#include "solver/format.h"
+
 namespace ivv::conformance {
 namespace {
 
@@ -43,11 +45,9 @@ std::optional<Jump> bisect(const std::function<double(double)>& f, double a, dou
   return Jump{a, b, fa, fb};
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(3);
-  os << v;
-  return os.str();
+// Three significant digits: enough for a reason, short enough to read (solver/format.h).
+std::string fmt3(double v) {
+  return fmt(v, 3);
 }
 
 }  // namespace
@@ -88,11 +88,11 @@ ScanResult scan_for_jumps(const std::function<double(double)>& f, double lo, dou
 }
 
 std::string blind_spots(const ScanResult& scan) {
-  return "a jump above R = " + fmt(scan.resolution) +
+  return "a jump above R = " + fmt3(scan.resolution) +
          " N (twice the largest change across one of " + std::to_string(scan.intervals) +
          " sample intervals) is always located; a smaller one can be masked by the smooth change "
          "around it, and a pulse narrower than dz = " +
-         fmt(scan.spacing) + " m (a jump and its return between two samples) can be missed";
+         fmt3(scan.spacing) + " m (a jump and its return between two samples) can be missed";
 }
 
 }  // namespace ivv::conformance
