@@ -4,8 +4,8 @@
 
 #include "app/cli_args.h"
 #include "reports/calibration_report.h"
-#include "solver/atomic_file.h"
 #include "scene/input_error.h"
+#include "solver/atomic_file.h"
 #include "validation/calibration_file.h"
 #include "validation/comparison.h"
 #include "validation/model_runs.h"

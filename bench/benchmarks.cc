@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "solver/atomic_file.h"
 #include "scene/input_error.h"
+#include "solver/atomic_file.h"
 #include "solver/simulate.h"
 
 namespace ivv::bench {

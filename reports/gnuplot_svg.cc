@@ -180,8 +180,8 @@ std::string gnuplot_script(const Plot& plot, SvgSize size) {
     const std::string name = "$d" + std::to_string(i);
     gp << name << " << EOD\n" << body << "EOD\n";
     const char* columns = s.style == Series::Style::error_bars ? " using 1:2:3 " : " using 1:2 ";
-    clauses.push_back(name + columns + style(s.style, static_cast<int>(i % 8) + 1) +
-                      " title " + quoted(s.label));
+    clauses.push_back(name + columns + style(s.style, static_cast<int>(i % 8) + 1) + " title " +
+                      quoted(s.label));
   }
   if (clauses.empty())
     throw EmptyPlot("plot '" + plot.id + "' (" + plot.title + ") has no finite data to draw");

@@ -21,8 +21,8 @@
 // capture" number that depends on the integrator and its tolerance.
 #pragma once
 
-#include "solver/result.h"
 #include "scene/scene.h"
+#include "solver/result.h"
 
 namespace ivv {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "solver/consistency.h"
 #include "scene/input_error.h"
+#include "solver/consistency.h"
 #include "solver/integrator_choice.h"
 #include "solver/laws/expression.h"
 #include "solver/model_choice.h"

@@ -40,8 +40,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/result.h"
 #include "scene/scene.h"
+#include "solver/result.h"
 
 namespace ivv::verification {
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "solver/simulate.h"
 #include "scene/structure.h"
+#include "solver/simulate.h"
 
 namespace ivv::verification {
 
