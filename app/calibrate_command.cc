@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/cli_args.h"
+#include "app/command.h"
 #include "reports/calibration_report.h"
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
@@ -150,7 +151,7 @@ void add_calibrate_flags(CLI::App& cmd, CalibrateFlags& f) {
   cmd.add_flag("--json", f.json, "print the calibration as JSON (the file ivv predict reads)");
   cmd.add_option("--out", f.out, "write the calibration JSON to this file");
   cmd.add_option("--report", f.report_dir, "write DIR/index.html for this calibration");
-  cmd.add_option("--threads", f.threads, "worker threads of the model runs (0 = all cores)");
+  app::add_threads_option(cmd, f.threads, "worker threads of the model runs (0 = all cores)");
 }
 
 int run_calibrate(const SimulationRequest& base, const CalibrateFlags& f,
@@ -220,7 +221,7 @@ void add_predict_flags(CLI::App& cmd, PredictFlags& f) {
   cmd.add_option("--samples", f.samples, "Monte Carlo draws (default 10000)");
   cmd.add_option("--seed", f.seed, "seed of the draws (default 1)");
   cmd.add_flag("--json", f.json, "print the band (and comparison) as JSON");
-  cmd.add_option("--threads", f.threads, "worker threads (0 = all cores)");
+  app::add_threads_option(cmd, f.threads, "worker threads (0 = all cores)");
 }
 
 int run_predict(const PredictFlags& f) {

@@ -484,4 +484,36 @@ TEST(Cli, Issue21CommandsGiveANumberOrBadInput) {
   EXPECT_FALSE(std::filesystem::exists("/dev/stdout.journal"));
 }
 
+// Issue 21 item 14: each message names what the user gave and the exit code says whose fault
+// it was (1: the computation failed; 2: the input is bad).
+TEST(Cli, Issue21MessagesNameWhatTheUserGave) {
+  // NaN reached inside contact is a failed computation (exit 1, the reason printed) ...
+  const CliRun inside =
+      ivv("simulate --scene paper --v0 1 --force 'z < 1e-5 ? K_h*z^1.5 : sqrt(-1)'");
+  EXPECT_EQ(inside.exit_code, 1) << inside.err;
+  EXPECT_NE(inside.out.find("--force evaluated to -nan"), std::string::npos) << inside.out;
+  // ... NaN at contact onset is a law no impact can run (exit 2)
+  const CliRun onset = ivv("simulate --scene paper --v0 1 --force 'sqrt(-1) + K_h*z^1.5'");
+  EXPECT_EQ(onset.exit_code, 2) << onset.err;
+  // fit-hc fits Hunt-Crossley to an expression law like to any other law
+  const CliRun fit = ivv("fit-hc --scene paper --v0 1 --force 'K_h*z^1.5*(1 + 0.3*zdot)' --json");
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  EXPECT_NEAR(nlohmann::json::parse(fit.out)["mu"].get<double>(), 0.3, 1e-6);  // it is HC
+  const CliRun captured = ivv("fit-hc --scene paper --v0 10 --zeta 2");
+  EXPECT_EQ(captured.exit_code, 1);
+  EXPECT_EQ(captured.err.find(") :"), std::string::npos) << captured.err;
+  const CliRun syntax = ivv("simulate --scene paper --force 'z++'");
+  EXPECT_EQ(syntax.exit_code, 2);
+  EXPECT_NE(syntax.err.find("syntax error"), std::string::npos) << syntax.err;
+  for (const char* cmd :
+       {"sweep --scene paper --v0 1 --zeta 0 --threads '' --out /tmp/ivv_never.csv",
+        "verify --filter 'analytic.*' --threads -1 --out /tmp/ivv_never.json",
+        "report --threads 2x --out /tmp/ivv_never_report"}) {
+    const CliRun r = ivv(cmd);
+    EXPECT_EQ(r.exit_code, 2) << cmd;
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists("/tmp/ivv_never.csv"));
+  }
+}
+
 }  // namespace

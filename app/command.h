@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,23 @@ namespace ivv::app {
 
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
+
+// --threads N (0: all cores), one definition for every command that runs in parallel. The text
+// must be a whole number in [0, kMaxThreads]: CLI11 alone reads '' as 0 (issue 21.14), and
+// '' is bad input like '2x' (exit 2, through CLI11's validation error).
+inline constexpr int kMaxThreads = 1024;
+inline CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& help) {
+  auto whole_number = [](std::string& text) -> std::string {
+    bool digits = !text.empty() && text.size() <= 4;
+    for (char ch : text) digits = digits && std::isdigit(static_cast<unsigned char>(ch));
+    if (digits && std::stoi(text) <= kMaxThreads) return {};
+    return "must be a whole number in [0, " + std::to_string(kMaxThreads) +
+           "] (0: all cores), got '" + text + "'";
+  };
+  return cmd.add_option("--threads", threads, help)
+      ->check(CLI::Validator(whole_number, "N in [0, " + std::to_string(kMaxThreads) + "]"))
+      ->capture_default_str();
+}
 
 // The process's command line, for the commands that record or repeat it.
 struct Invocation {

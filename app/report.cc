@@ -17,7 +17,7 @@ class Report final : public Command {
     CLI::App& cmd = cli();
     cmd.add_option("--out", options_.out_dir, "report directory (created if missing)")->required();
     cmd.add_option("--filter", options_.filter, "only cases whose id matches this glob");
-    cmd.add_option("--threads", options_.threads, "worker threads (0 = all cores)");
+    add_threads_option(cmd, options_.threads, "worker threads (0 = all cores)");
     cmd.add_flag("--allow-failures", options_.allow_failures,
                  "exit 0 even when a case fails (the report shows it)");
     cmd.add_flag("--quick", options_.quick, "fewer sweep and timing points (smoke runs)");

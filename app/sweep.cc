@@ -155,8 +155,7 @@ class Sweep final : public Command {
                    "dashpot at every point");
     cmd.add_option("--out", sf_.out_path, "output CSV (the sidecar goes beside it: NAME.json)")
         ->required();
-    cmd.add_option("--threads", sf_.threads, "worker threads per process (0 = all cores)")
-        ->capture_default_str();
+    add_threads_option(cmd, sf_.threads, "worker threads per process (0 = all cores)");
     cmd.add_flag("--resume", sf_.resume,
                  "continue an interrupted sweep from its journal (OUT.journal)");
     cmd.add_flag("-q,--quiet", sf_.quiet, "no progress on stderr");

@@ -33,7 +33,7 @@ class Verify final : public Command {
       : Command(app.add_subcommand("verify", "run the verification cases, write results JSON")) {
     cli().add_option("--filter", filter_, "only cases whose id matches this glob");
     cli().add_option("--out", out_, "results JSON file");
-    cli().add_option("--threads", threads_, "worker threads (0 = all cores)");
+    add_threads_option(cli(), threads_, "worker threads (0 = all cores)");
     cli().add_flag("--list", list_, "list the matching cases instead of running them");
   }
 

@@ -6,6 +6,7 @@
 
 #include "scene/input_error.h"
 #include "solver/consistency.h"
+#include "solver/format.h"
 
 namespace ivv {
 
@@ -15,9 +16,10 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
   HuntCrossleyFit fit;
   fit.model = simulate(model);
   if (fit.model.status != ImpactStatus::separated) {
+    const std::string why = fit.model.reason.empty() ? "" : ": " + fit.model.reason;
     throw std::runtime_error("the model impact did not rebound (" +
-                             std::string(to_string(fit.model.status)) + ") " + fit.model.reason +
-                             ": Hunt-Crossley (e > 0 always) cannot match it");
+                             std::string(to_string(fit.model.status)) + why +
+                             "); Hunt-Crossley (e > 0 always) cannot match it");
   }
   fit.e = fit.model.e;
   fit.F_max = fit.model.F_max;
@@ -26,6 +28,8 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
 
   SimulationRequest hc = model;
   hc.law = LawKind::hunt_crossley;
+  hc.expression = {};  // the model may be an expression law; Hunt-Crossley is not one
+  hc.parameters.clear();
   hc.scene.damping = Damping::none();
   hc.parameters["K"] = p.K_h;
   const double v0 = model.scene.velocity;
@@ -57,8 +61,8 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
     f_lo = f_hi;
     hi *= 4;
     if (hi > 1e6)
-      throw std::runtime_error("cannot bracket the Hunt-Crossley mu for e = " +
-                               std::to_string(fit.e));
+      throw std::runtime_error("cannot bracket the Hunt-Crossley mu for e = " + fmt(fit.e, 9) +
+                               " (mu v0 > 1e6 still gives a larger e)");
     f_hi = run(hi).e - fit.e;
   }
   // the COR of the runs is accurate to ~1e-10 (rtol); stop the bracket near that
@@ -68,8 +72,8 @@ HuntCrossleyFit fit_hunt_crossley(const SimulationRequest& model) {
       [&](double u0) { return run(u0).e - fit.e; }, lo, hi, f_lo, f_hi, tol, iterations);
   if (iterations >= 100 && !tol(bracket.first, bracket.second))
     throw std::runtime_error("fit-hc: TOMS 748 did not resolve mu in 100 iterations (bracket [" +
-                             std::to_string(bracket.first / v0) + ", " +
-                             std::to_string(bracket.second / v0) + "] s/m)");
+                             fmt(bracket.first / v0, 9) + ", " + fmt(bracket.second / v0, 9) +
+                             "] s/m)");
   const double u0 = 0.5 * (bracket.first + bracket.second);
   const ImpactResult trial = run(u0);
   fit.mu = u0 / v0;

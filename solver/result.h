@@ -13,7 +13,11 @@ enum class ImpactStatus {
   failed      // see ImpactResult::reason
 };
 
-enum class FailureKind { none, law_domain, integrator };
+// Why a run failed. law_domain: the law is undefined for this scene or at contact onset, which
+// is known before any step (a front end treats it as bad input); law_non_finite: the law
+// returned NaN or infinity at a state reached inside contact (a computation that failed);
+// integrator: a step, a root finder or a budget ran out.
+enum class FailureKind { none, law_domain, law_non_finite, integrator };
 
 enum class EventKind {
   onset,

@@ -182,7 +182,8 @@ ImpactResult run_expression_law(const ValidatedRequest& v, F&& run) {
   }
   if (compiled->non_finite()) {
     r.status = ImpactStatus::failed;
-    r.failure = FailureKind::law_domain;
+    r.failure =
+        compiled->non_finite_at_onset() ? FailureKind::law_domain : FailureKind::law_non_finite;
     r.reason = *compiled->non_finite();
   }
   return r;

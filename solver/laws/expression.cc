@@ -91,7 +91,8 @@ bool setup_parser(mu::Parser& parser, const std::string& text, const std::string
     const std::string what = e.GetMsg();
     throw ExpressionError(field, text, e.GetPos(),
                           what.find("Internal error") != std::string::npos
-                              ? "cannot be parsed here (muParser: " + what + ")"
+                              ? "syntax error at the caret (muParser gives up with '" + what +
+                                    "'; e.g. an operator without its operand, as in 'z++')"
                               : what);
   }
   if (parser.GetNumResults() > 1) {
@@ -203,6 +204,7 @@ double CompiledExpressions::evaluate(bool unload, double z, double zdot, double 
        << " at z = " << z << " m, zdot = " << zdot << " m/s, zmax = " << zmax
        << " m: the expression must be finite wherever contact can reach";
     non_finite_ = os.str();
+    non_finite_at_onset_ = z <= 0 && zmax <= 0;
   }
   return F;
 }
@@ -274,7 +276,9 @@ std::function<double(double)> compile_cor_claim(const std::string& text,
   std::string known = known_names("v0", constants);
   if (!functions.empty()) known += "; functions";
   for (const ExpressionFunction& f : functions) {
-    known += " " + std::string(f.signature);
+    known +=
+        ' ';  // two appends: `" " + std::string(...)` trips GCC 12's -Wrestrict (a false alarm)
+    known += f.signature;
     if (f.one) claim->parser.DefineFun(std::string(f.name), f.one);
     if (f.two) claim->parser.DefineFun(std::string(f.name), f.two);
   }

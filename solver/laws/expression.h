@@ -84,6 +84,9 @@ class CompiledExpressions {
   double velocity_scale() const { return v_ref_; }   // v0 [m/s]
   // The first NaN or infinity met inside contact, if any ("--force = nan at z = ..., ...").
   const std::optional<std::string>& non_finite() const { return non_finite_; }
+  // Whether that first non-finite value was at contact onset (z <= 0, zmax = 0), which no
+  // impact can avoid, rather than at a state the run reached inside contact.
+  bool non_finite_at_onset() const { return non_finite_at_onset_; }
 
  private:
   double evaluate(bool unload, double z, double zdot, double zmax) const;
@@ -93,6 +96,7 @@ class CompiledExpressions {
   bool has_unload_ = false;
   double z_ref_ = 1.0, k_ref_ = 1.0, v_ref_ = 1.0;
   mutable std::optional<std::string> non_finite_;
+  mutable bool non_finite_at_onset_ = false;
 };
 
 // The law handed to the driver. Rate: whether the expressions use zdot (then the law carries

@@ -133,8 +133,20 @@ TEST(ExpressionLaw, NonFiniteForceInContactIsAFailureNamingTheExpression) {
   r.expression.force = "K_h*z^1.5 + log(2e-5 - z)";  // NaN once z > 2e-5 m
   const ImpactResult res = simulate(r);
   EXPECT_EQ(res.status, ImpactStatus::failed);
-  EXPECT_EQ(res.failure, FailureKind::law_domain);
+  // reached inside contact: a computation that failed (exit 1), not bad input (issue 21.14)
+  EXPECT_EQ(res.failure, FailureKind::law_non_finite);
   EXPECT_NE(res.reason.find("--force evaluated to"), std::string::npos) << res.reason;
+}
+
+TEST(ExpressionLaw, NonFiniteForceAtOnsetIsTheLawsDomain) {
+  SimulationRequest r;
+  r.scene = paper_scene();
+  r.law = LawKind::expression;
+  r.expression.force = "K_h*z^1.5 + log(z - 1e-9)";  // NaN at z = 0: no impact can start
+  const ImpactResult res = simulate(r);
+  EXPECT_EQ(res.status, ImpactStatus::failed);
+  EXPECT_EQ(res.failure, FailureKind::law_domain);
+  EXPECT_NE(res.reason.find("at z = 0 m"), std::string::npos) << res.reason;
 }
 
 TEST(ExpressionLaw, TheFiftyDigitReferenceSaysItCannotRunIt) {
