@@ -8,7 +8,8 @@
 //
 // The events, their root functions, directions and meanings are the table of impact_events.h;
 // the capture criteria (exact, by energy, grazing) are the units of capture.h. Onset is the
-// initial state (alpha = 0, alpha_dot = v0).
+// initial state (alpha = 0, alpha_dot = v0); the error-controlled steppers written here start
+// past it, from the onset series, where the law declares a Hertzian onset (onset_series.h).
 //
 // Steppers with dense output are located on it directly, and a step goes on past an event
 // that changes no branch (max_displacement, peak_force: they only record the state): the rest
@@ -29,6 +30,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,6 +41,7 @@
 #include "solver/impact_events.h"
 #include "solver/integrator_options.h"
 #include "solver/law.h"
+#include "solver/onset_series.h"
 #include "solver/result.h"
 #include "solver/steppers/step_result.h"
 
@@ -271,12 +274,57 @@ class ImpactDriver {
     const T tau = 0;
     sys_.branch = typename System::history_type{};
     sys_.tension = law_allows_tension(sys_.law);
-    stepper_.start(sys_, tau, x);
     // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
     // and separation or capture, with room for a law with more segments
     run_.events.reserve(8);
     run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
     if (observer_) (*observer_)(0.0, x, sys_);
+    if constexpr (requires { Stepper::starts_from_onset_series; }) {
+      if (const std::optional<SeriesStart> start = series_start()) {
+        stepper_.start(sys_, start->tau, start->x);
+        // the solution's own time scale there is tau itself (F ~ tau^{3/2})
+        stepper_.propose_step(start->tau);
+        if (observer_) (*observer_)(start->tau, start->x, sys_);
+        return;
+      }
+    }
+    stepper_.start(sys_, tau, x);
+  }
+
+  struct SeriesStart {
+    T tau;
+    state_type x;
+  };
+  // Where the integration starts past onset (onset_series.h): the tau at which the series'
+  // truncation bound is rtol, kept below half the end of the Hertzian onset (z <= tau, so the
+  // first kink, z_y, is met by the integrator and located as an event). nullopt where the
+  // series does not apply: a law without a Hertzian onset, a fixed step, the 50-digit
+  // reference (T is not double), or options.onset_series off.
+  std::optional<SeriesStart> series_start() const {
+    if constexpr (!std::is_same_v<T, double>) {
+      return std::nullopt;
+    } else {
+      if (opt_.fixed_step || !opt_.onset_series || !opt_.locate_events) return std::nullopt;
+      const std::optional<HertzianOnset> onset = hertzian_onset(sys_.law);
+      if (!onset) return std::nullopt;
+      const double L = sys_.length;
+      const double kappa = onset->K * L * std::sqrt(L) * sys_.inverse_force_scale;
+      const double beta = System::has_dashpot ? sys_.two_zeta : 0.0;
+      const double tau =
+          std::min(onset_series_reach(kappa, beta, opt_.rtol), 0.5 * onset->z_end / L);
+      if (!(tau > 0 && std::isfinite(tau) && std::isfinite(kappa))) return std::nullopt;
+      const OnsetSeriesState s = onset_series_state(kappa, beta, tau);
+      state_type x{};
+      x[System::A] = s.a;
+      x[System::W] = s.w;
+      if constexpr (System::has_dashpot) {
+        x[System::Z] = s.z;
+        x[System::WV] = s.Wv;
+      }
+      x[System::J] = s.J;
+      x[System::WA] = s.Wa;
+      return SeriesStart{tau, x};
+    }
   }
 
   // One accepted step; false when a limit is reached or the stepper fails (failure_ says why).

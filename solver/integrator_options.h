@@ -23,6 +23,10 @@ struct IntegratorOptions {
   long max_steps = 2'000'000;  // accepted steps per impact before giving up
   double tau_max = 1e8;        // normalised time limit before giving up
   bool locate_events = true;   // false: events detected only at step ends (demonstrations)
+  // Start dop853, dp45 and rodas4 past contact onset from the series of solver/onset_series.h
+  // (laws with a Hertzian onset), where it is accurate to rtol: the steps that leave the
+  // z^{3/2} onset are not taken. false: integrate from tau = 0 (the speed study's "before").
+  bool onset_series = true;
   // Post-run check that the three CORs and the energy ledger agree within what rtol/atol
   // allow (solver/consistency.h); a run that does not is a failure with the reason. Off only
   // for studies that measure the error of deliberately coarse runs (convergence order).

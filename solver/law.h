@@ -89,6 +89,10 @@ class LawDomainError : public std::runtime_error {
 //                                             branch above z_f (a convex unloading curve: its
 //                                             slope at z_f), or nullopt. Lets the driver decide
 //                                             capture exactly (impact_driver.h)
+//   hertzian_onset()                          HertzianOnset: F = K z^{3/2} exactly on first
+//                                             loading for 0 <= z <= z_end, so the driver may
+//                                             start the integration from the onset series
+//                                             (solver/onset_series.h); rate-independent laws only
 //
 // One concept per member, so that assert_contact_law (below) names the member at fault in the
 // first line of a compile error.
@@ -216,6 +220,21 @@ bool law_allows_tension(const L& law) {
     return static_cast<bool>(law.allows_tension);
   else
     return false;
+}
+
+// What a law declares about its onset (hertzian_onset() above).
+struct HertzianOnset {
+  double K = 0.0;      // [N/m^1.5]: F = K z^{3/2} ...
+  double z_end = 0.0;  // [m] ... for 0 <= z <= z_end on first loading (inf: no end)
+};
+
+// The law's hertzian_onset() when it declares one and is rate-independent, else nullopt.
+template <class L>
+std::optional<HertzianOnset> hertzian_onset(const L& law) {
+  if constexpr (requires { law.hertzian_onset(); } && !L::rate_dependent)
+    return law.hertzian_onset();
+  else
+    return std::nullopt;
 }
 
 // The law's unloading_slope_floor(h) when it declares one (see above), else nullopt.

@@ -26,7 +26,9 @@
 #include "solver/consistency.h"
 #include "solver/integrator_choice.h"
 #include "solver/model_choice.h"
+#include "solver/onset_series.h"
 #include "verification/cases.h"
+#include "verification/onset_reference.h"
 #include "verification/study_speed.h"
 #include "verification/support.h"
 #include "verification/work_precision.h"
@@ -286,6 +288,46 @@ Outcome work_precision_case() {
   return o;
 }
 
+// The onset series (solver/onset_series.h) against the 50-digit integration from tau = 0
+// (verification/onset_reference.h) at the tau where the integrators start from it, for each
+// tolerance: each quantity's error in units of what the series' truncation bound allows for
+// it (bound x the part of the quantity the series computes, J for w, tau - a for a, tau - z
+// for z; plus 4 ulps of the quantity for double rounding).
+Outcome onset_series_case() {
+  double worst = 0;
+  std::string at;
+  int points = 0;
+  for (double kappa : {0.3, 1.0, 3.0})
+    for (double beta : {0.0, 0.2, 2.0, 32.0})
+      for (double tol : {1e-6, 1e-8, 1e-10, 1e-12}) {
+        const double tau = onset_series_reach(kappa, beta, tol);
+        const double bound = onset_series_error_bound(kappa, beta, tau);
+        const OnsetSeriesState s = onset_series_state(kappa, beta, tau);
+        const OnsetSeriesState ref = onset_reference_state(kappa, beta, tau);
+        ++points;
+        const double eps = std::numeric_limits<double>::epsilon();
+        auto judge = [&](const char* what, double got, double want, double part) {
+          const double allowed = bound * std::abs(part) + 4 * eps * std::abs(want);
+          const double ratio = std::abs(got - want) / allowed;
+          if (!(ratio <= worst)) {
+            worst = ratio;
+            at = std::string(what) + " at kappa = " + fmt(kappa) + ", beta = " + fmt(beta) +
+                 ", tolerance " + fmt(tol) + " (tau = " + fmt(tau, 4) + ", bound " + fmt(bound, 3) +
+                 ")";
+          }
+        };
+        judge("J", s.J, ref.J, ref.J);
+        judge("w", s.w, ref.w, ref.J);
+        judge("a", s.a, ref.a, tau - ref.a);
+        judge("z", s.z, ref.z, tau - ref.z);
+        judge("Wa", s.Wa, ref.Wa, ref.Wa);
+        if (beta > 0) judge("Wv", s.Wv, ref.Wv, ref.Wv);
+      }
+  return at_most(worst, 2.0,
+                 "largest error in units of the truncation bound over " + std::to_string(points) +
+                     " (kappa, beta, tolerance) points: " + fmt(worst, 3) + ", " + at);
+}
+
 }  // namespace
 
 void register_convergence_cases(Registry& reg) {
@@ -312,6 +354,15 @@ void register_convergence_cases(Registry& reg) {
                  "round-off (see order_tolerance)",
              false, [k] { return generic_order_case(k); }});
   }
+  reg.add({"onset.series",
+           "The onset series the integrators start from agrees with a 50-digit integration from "
+           "contact onset, within its own truncation bound",
+           Tier::analytic,
+           "the bound is the first omitted degree of the series (sum of |c_ab| max(p, r)^6); "
+           "later degrees add at most a fraction max(p, r)/2.6 < 1 of it, hence 2 bounds "
+           "(solver/onset_series.h); the reference is Richardson-extrapolated RK4 in q = "
+           "tau^{1/2} in 50 digits",
+           false, onset_series_case});
   reg.add({"autochoice.model",
            "--model auto stays within its stated error, and never states more than the full "
            "model would",

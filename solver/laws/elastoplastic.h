@@ -59,6 +59,9 @@ struct ElastoplasticLaw {
   double z_y = 0.0;  // [m]
   double K_y = 0.0;  // [N/m]
 
+  // Hertzian up to yield (region I above; law.h).
+  HertzianOnset hertzian_onset() const { return {K_h, z_y}; }
+
   // Hertz force at the yield point, K_h z_y^{3/2} [N].
   double yield_force() const { return K_h * z_y * std::sqrt(z_y); }
 

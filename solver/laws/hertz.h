@@ -29,6 +29,9 @@ struct HertzLaw {
 
   double K_h = 0.0;  // [N/m^1.5]
 
+  // Hertzian from onset on, without end (law.h).
+  HertzianOnset hertzian_onset() const { return {K_h, std::numeric_limits<double>::infinity()}; }
+
   template <class T>
   T force(const Branch<T>&, const T& z, const T&) const {
     return K_h * signed_pow_1_5(z);

@@ -39,6 +39,15 @@ class AdaptiveStepState : public StepState<System> {
  public:
   using T = typename System::value_type;
 
+  // The error-controlled steppers written here may start past onset, from the onset series
+  // (impact_driver.h, onset_series.h); odeint's, GSL's and the reference start at tau = 0, so
+  // that the cross-implementation cases compare a series start with an integration from onset.
+  static constexpr bool starts_from_onset_series = true;
+  // The step to try first from the state start() is given next (ignored in fixed-step mode).
+  void propose_step(T h) {
+    if (!fixed_) h_ = h;
+  }
+
  protected:
   explicit AdaptiveStepState(const IntegratorOptions& opt)
       : rtol_(opt.rtol),
