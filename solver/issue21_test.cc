@@ -116,8 +116,8 @@ TEST(Issue21, IntegratorAutoWithoutYieldStrengthMeasuresStiffness) {
   const DerivedParameters p = derive(req.scene);
   const double S = stiffness_ratio(req.scene, p);
   ASSERT_TRUE(std::isfinite(S));
-  EXPECT_GT(S, kStiffnessThreshold);  // c = 1 N s/m: the dashpot relaxes far faster than loading
-  EXPECT_EQ(auto_integrator(req.scene, p), IntegratorKind::rodas4);
+  EXPECT_GT(S, 100.0);  // c = 1 N s/m: the dashpot relaxes far faster than loading
+  EXPECT_EQ(auto_integrator(req, p), IntegratorKind::rodas4);
   req.auto_integrator = true;
   const ImpactResult r = simulate(req);
   EXPECT_TRUE(r.ok()) << r.reason;

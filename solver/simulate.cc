@@ -185,7 +185,7 @@ ImpactResult simulate(const ValidatedRequest& v, std::vector<TrajectoryPoint>* t
 }
 
 IntegratorKind effective_integrator(const ValidatedRequest& v) {
-  return v.request().auto_integrator ? auto_integrator(v.request().scene, v.derived())
+  return v.request().auto_integrator ? auto_integrator(v.request(), v.derived())
                                      : v.request().integrator;
 }
 
