@@ -72,7 +72,15 @@ def derive(degree):
 def main():
     c = derive(DEGREE)
     kept = {ab: v for ab, v in c.items() if sum(ab) <= DEGREE}
+    # the first omitted degree of B, and of B^2 (Wv integrates F_bar^2: twice B's relative error
+    # and the cross products of kept terms): B's bounds F_bar, J, int J; B^2's bounds Wv
+    full_sq = {}
+    for (a1, b1), v1 in c.items():
+        for (a2, b2), v2 in c.items():
+            if a1 + a2 + b1 + b2 == DEGREE + 1:
+                full_sq[(a1 + a2, b1 + b2)] = full_sq.get((a1 + a2, b1 + b2), 0) + v1 * v2
     error = sum(abs(v) for ab, v in c.items() if sum(ab) == DEGREE + 1)
+    error_sq = sum(abs(v) for v in full_sq.values())
     half = sp.Rational(1, 2)
     e = {ab: sp.Rational(3, 2) + 3 * half * ab[0] + 5 * half * ab[1] for ab in kept}
     sq = {}
@@ -91,8 +99,11 @@ def main():
     out.write("// The series of solver/onset_series.h: coefficient [a][b] of p^a r^b, total degree <= %d.\n" % DEGREE)
     out.write("#pragma once\n\nnamespace ivv::onset_series {\n\n")
     out.write("inline constexpr int kDegree = %d;\n\n" % DEGREE)
-    out.write("// Sum of |c_ab| over the first omitted degree (%d) of B: the truncation bound's constant.\n" % (DEGREE + 1))
-    out.write("inline constexpr double kErrorConstant = %s;  // %s\n\n" % (repr(float(error)), error))
+    out.write("// Sum of |c_ab| over the first omitted degree (%d) of B: the truncation bound's constant\n" % (DEGREE + 1))
+    out.write("// (F_bar, J, int J and the state).\n")
+    out.write("inline constexpr double kErrorConstant = %s;  // %s\n" % (repr(float(error)), error))
+    out.write("// The same for B^2 (Wv = beta int F_bar^2: twice B's error and the omitted cross products).\n")
+    out.write("inline constexpr double kDashpotWorkErrorConstant = %s;  // %s\n\n" % (repr(float(error_sq)), error_sq))
     comments = {
         "kForce": "B = F_bar / (kappa tau^{3/2})",
         "kImpulse": "J / r",

@@ -284,11 +284,36 @@ class ImpactDriver {
         stepper_.start(sys_, start->tau, start->x);
         // the solution's own time scale there is tau itself (F ~ tau^{3/2})
         stepper_.propose_step(start->tau);
-        if (observer_) (*observer_)(start->tau, start->x, sys_);
+        if (observer_) emit_series_samples(start->tau);
         return;
       }
     }
     stepper_.start(sys_, tau, x);
+  }
+
+  // Trajectory samples on (0, tau0], from the series like the state at tau0.
+  void emit_series_samples(T tau0) {
+    const std::optional<HertzianOnset> onset = hertzian_onset(sys_.law);
+    const double L = sys_.length;
+    const double kappa = onset->K * L * std::sqrt(L) * sys_.inverse_force_scale;
+    const double beta = System::has_dashpot ? sys_.two_zeta : 0.0;
+    for (int k = 1; k <= samples_per_step_; ++k) {
+      const double tau = static_cast<double>(tau0) * k / samples_per_step_;
+      (*observer_)(tau, series_state(onset_series_state(kappa, beta, tau)), sys_);
+    }
+  }
+
+  static state_type series_state(const OnsetSeriesState& s) {
+    state_type x{};
+    x[System::A] = s.a;
+    x[System::W] = s.w;
+    if constexpr (System::has_dashpot) {
+      x[System::Z] = s.z;
+      x[System::WV] = s.Wv;
+    }
+    x[System::J] = s.J;
+    x[System::WA] = s.Wa;
+    return x;
   }
 
   struct SeriesStart {
@@ -313,17 +338,7 @@ class ImpactDriver {
       const double tau =
           std::min(onset_series_reach(kappa, beta, opt_.rtol), 0.5 * onset->z_end / L);
       if (!(tau > 0 && std::isfinite(tau) && std::isfinite(kappa))) return std::nullopt;
-      const OnsetSeriesState s = onset_series_state(kappa, beta, tau);
-      state_type x{};
-      x[System::A] = s.a;
-      x[System::W] = s.w;
-      if constexpr (System::has_dashpot) {
-        x[System::Z] = s.z;
-        x[System::WV] = s.Wv;
-      }
-      x[System::J] = s.J;
-      x[System::WA] = s.Wa;
-      return SeriesStart{tau, x};
+      return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau))};
     }
   }
 

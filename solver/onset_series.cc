@@ -44,6 +44,11 @@ double onset_series_error_bound(double kappa, double beta, double tau) {
   return onset_series::kErrorConstant * std::pow(s, kDegree + 1);
 }
 
+double onset_series_dashpot_work_error_bound(double kappa, double beta, double tau) {
+  return onset_series_error_bound(kappa, beta, tau) * onset_series::kDashpotWorkErrorConstant /
+         onset_series::kErrorConstant;
+}
+
 double onset_series_reach(double kappa, double beta, double tolerance) {
   // max(p, r) <= s_max  <=>  tau <= (s_max/kappa)^{2/5} and tau <= (s_max/(beta kappa))^{2/3}
   const double s_max = std::pow(tolerance / onset_series::kErrorConstant, 1.0 / (kDegree + 1));

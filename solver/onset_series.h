@@ -52,6 +52,11 @@ OnsetSeriesState onset_series_state(double kappa, double beta, double tau);
 // The bound on the relative truncation error of the series at tau (see above).
 double onset_series_error_bound(double kappa, double beta, double tau);
 
+// The bound on the relative truncation error of Wv (B^2's first omitted degree, constant
+// kDashpotWorkErrorConstant = 0.198: Wv only closes the energy ledger, where it is
+// negligible at the reach, Wv = p r / 4 << 1).
+double onset_series_dashpot_work_error_bound(double kappa, double beta, double tau);
+
 // The largest tau at which onset_series_error_bound(kappa, beta, tau) <= tolerance.
 double onset_series_reach(double kappa, double beta, double tolerance);
 

@@ -6,8 +6,11 @@ namespace ivv::onset_series {
 
 inline constexpr int kDegree = 5;
 
-// Sum of |c_ab| over the first omitted degree (6) of B: the truncation bound's constant.
+// Sum of |c_ab| over the first omitted degree (6) of B: the truncation bound's constant
+// (F_bar, J, int J and the state).
 inline constexpr double kErrorConstant = 0.013553358400693046;  // 367678719826787359/27128237072811875000
+// The same for B^2 (Wv = beta int F_bar^2: twice B's error and the omitted cross products).
+inline constexpr double kDashpotWorkErrorConstant = 0.1977525239890802;  // 17166967528072592437/86810358632998000000
 
 // B = F_bar / (kappa tau^{3/2})
 inline constexpr double kForce[kDegree + 1][kDegree + 1] = {
