@@ -284,22 +284,24 @@ class ImpactDriver {
         stepper_.start(sys_, start->tau, start->x);
         // the solution's own time scale there is tau itself (F ~ tau^{3/2})
         stepper_.propose_step(start->tau);
-        if (observer_) emit_series_samples(start->tau);
+        if (observer_) emit_series_samples(*start);
         return;
       }
     }
     stepper_.start(sys_, tau, x);
   }
 
+  struct SeriesStart {
+    T tau;
+    state_type x;
+    double kappa, beta;  // the series' F_bar = kappa z^{3/2} and 2 zeta (onset_series.h)
+  };
+
   // Trajectory samples on (0, tau0], from the series like the state at tau0.
-  void emit_series_samples(T tau0) {
-    const std::optional<HertzianOnset> onset = hertzian_onset(sys_.law);
-    const double L = sys_.length;
-    const double kappa = onset->K * L * std::sqrt(L) * sys_.inverse_force_scale;
-    const double beta = System::has_dashpot ? sys_.two_zeta : 0.0;
+  void emit_series_samples(const SeriesStart& start) {
     for (int k = 1; k <= samples_per_step_; ++k) {
-      const double tau = static_cast<double>(tau0) * k / samples_per_step_;
-      (*observer_)(tau, series_state(onset_series_state(kappa, beta, tau)), sys_);
+      const double tau = static_cast<double>(start.tau) * k / samples_per_step_;
+      (*observer_)(tau, series_state(onset_series_state(start.kappa, start.beta, tau)), sys_);
     }
   }
 
@@ -316,10 +318,6 @@ class ImpactDriver {
     return x;
   }
 
-  struct SeriesStart {
-    T tau;
-    state_type x;
-  };
   // Where the integration starts past onset (onset_series.h): the tau at which the series'
   // truncation bound is rtol, kept below half the end of the Hertzian onset (z <= tau, so the
   // first kink, z_y, is met by the integrator and located as an event). nullopt where the
@@ -338,7 +336,7 @@ class ImpactDriver {
       const double tau =
           std::min(onset_series_reach(kappa, beta, opt_.rtol), 0.5 * onset->z_end / L);
       if (!(tau > 0 && std::isfinite(tau) && std::isfinite(kappa))) return std::nullopt;
-      return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau))};
+      return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau)), kappa, beta};
     }
   }
 
