@@ -142,31 +142,39 @@ struct EarliestCrossing {
   // crossing times of the roots solved in the earliest bracketing subinterval (others nullopt)
   std::array<std::optional<T>, Capacity> found{};
   std::array<bool, Capacity> armed{};  // strictly on the pre-event side at t0
+  std::array<T, Capacity> g1{};        // each root's value at x1 (the next step's g at x0)
 };
 
 // The earliest crossing among the roots of `set` on one step [t0, t1] with end states x0, x1.
 //   g(i, x)               value of root i at state x
-//   interpolate(t, x)     the step's interpolant at t into x
+//   interpolate(t, x)     the step's interpolant at t into x (at least the components g reads)
 // When a non-monotone root is active and `solve` is true, the step is probed at
 // opt.samples equal subintervals (a root returning to its pre-event side within the step is
 // not missed); each probe state is interpolated once and shared by all roots. Only the earliest
 // bracketing subinterval is solved (solve_crossing), for the roots that cross in it. With
 // `solve` false a crossing is placed at t1 (detection at step ends, for demonstrations).
+// `g0`, when given, holds the roots' values at x0 (the previous step's g1 for the same roots
+// at the same state: a step's start is the last one's end), which are then not recomputed.
 // Throws EventLocationError as solve_crossing does.
 template <std::size_t Capacity, class T, class State, class Interpolate, class Root>
 EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, const T& t1,
                                               const State& x1, Interpolate&& interpolate,
                                               const RootSet<Capacity>& set, Root&& g,
-                                              const LocatorOptions& opt, bool solve) {
+                                              const LocatorOptions& opt, bool solve,
+                                              const std::array<T, Capacity>* g0 = nullptr) {
   bool probe = false;
   for (int i = 0; i < set.size; ++i) probe = probe || !set.roots[i].monotone;
   const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
   std::array<T, LocatorOptions::max_samples + 1> tp;
   std::array<std::array<T, Capacity>, LocatorOptions::max_samples + 1> gp;
-  State s;
+  State s{};  // interpolate() may fill only the components the roots read
   for (int k = 0; k <= n; ++k) {
     tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
     const State* xk = &s;
+    if (k == 0 && g0) {
+      gp[0] = *g0;
+      continue;
+    }
     if (k == 0)
       xk = &x0;
     else if (k == n)
@@ -176,6 +184,7 @@ EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, cons
     for (int i = 0; i < set.size; ++i) gp[k][i] = g(i, *xk);
   }
   EarliestCrossing<T, Capacity> out;
+  out.g1 = gp[n];
   std::array<int, Capacity> sub{};  // first subinterval in which root i is past its event
   int first_sub = n + 1;
   for (int i = 0; i < set.size; ++i) {

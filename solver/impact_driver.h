@@ -421,13 +421,33 @@ class ImpactDriver {
 
   // The earliest crossing of the active events on the part of the step being scanned.
   Earliest locate(const ActiveEvents& active) {
-    auto interpolate = [this](const T& t, state_type& s) { stepper_.interpolate(sys_, t, s); };
+    auto interpolate = [this](const T& t, state_type& s) {
+      if constexpr (requires { stepper_.interpolate(sys_, t, s, System::event_components); })
+        stepper_.interpolate(sys_, t, s, System::event_components);
+      else
+        stepper_.interpolate(sys_, t, s);
+    };
     auto root = [this, &active](int i, const state_type& s) {
       return event_root(active.kinds[i], sys_, s);
     };
-    return locate_earliest(scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate,
-                           active.roots, root, opt_.locator, opt_.locate_events);
+    // the roots at this step's start are those at the last one's end when that step fired
+    // nothing and the same roots are active (same branch): not evaluated twice
+    const bool reuse = roots_at_end_.valid && roots_at_end_.size == active.size() &&
+                       roots_at_end_.kinds == active.kinds;
+    Earliest earliest =
+        locate_earliest(scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate, active.roots,
+                        root, opt_.locator, opt_.locate_events, reuse ? &roots_at_end_.g : nullptr);
+    roots_at_end_ = {!earliest.t, active.size(), active.kinds, earliest.g1};
+    return earliest;
   }
+
+  // The active roots' values at the end of the last step located on, for the next one.
+  struct RootsAtEnd {
+    bool valid = false;  // no event fired on that step: the next starts from its end
+    int size = 0;
+    std::array<EventKind, ActiveEvents::capacity> kinds{};
+    std::array<T, ActiveEvents::capacity> g{};
+  };
 
   // The state xe at the event time te: on the dense output, or refined by re-stepping (te
   // moves to the refined time) for a stepper without one. A refinement that fails: why.
@@ -574,6 +594,7 @@ class ImpactDriver {
   // A dense-output step goes on past an event that changes no branch: `resume_` says so, and
   // the scan of the current step starts at (scan_t0_, scan_x0_).
   bool resume_ = false;
+  RootsAtEnd roots_at_end_;
   int separation_retakes_ = 0;  // retake_to_separation() so far
   std::string failure_;         // why advance() could not take a step
   T scan_t0_ = 0;

@@ -76,7 +76,8 @@ static_assert(event_row(EventKind::yield).kind == EventKind::yield &&
                   event_row(EventKind::separation).kind == EventKind::separation,
               "kImpactEvents follows the order of EventKind");
 
-// The root function of event `k` at normalised state s, on the system's current branch.
+// The root function of event `k` at normalised state s, on the system's current branch. It
+// reads only System::event_components of s (z and w), which is all the locator interpolates.
 template <class System>
 typename System::value_type event_root(EventKind k, const System& sys,
                                        const typename System::state_type& s) {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "solver/impact_system.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hunt_crossley.h"
@@ -88,6 +91,33 @@ TEST(ImpactEvents, RateDependentLawProbesPeakForceAndSeparation) {
   const ActiveEvents unloading = active_events(sys, EventsFound{true, true}, x0, x1);
   EXPECT_EQ(kinds(unloading), std::vector<EventKind>{EventKind::separation});
   EXPECT_FALSE(unloading.roots.roots[0].monotone);  // F = K z^{3/2} (1 + mu z') is not
+}
+
+// The locator interpolates only System::event_components (z and w) for the roots: every root,
+// on the loading and the unloading branch, must give the same value when the other components
+// are NaN.
+template <class System>
+void expect_roots_read_only_event_components(System sys, typename System::state_type x) {
+  typename System::state_type only = x;
+  for (std::size_t i = 0; i < only.size(); ++i)
+    if (std::find(System::event_components.begin(), System::event_components.end(), i) ==
+        System::event_components.end())
+      only[i] = std::nan("");
+  for (bool unloading : {false, true}) {
+    if (unloading) sys.law.begin_unloading(sys.branch, 0.3);
+    for (const ImpactEventRow& row : kImpactEvents) {
+      if (row.kind == EventKind::yield && !sys.law.segment_end(sys.branch)) continue;
+      EXPECT_EQ(event_root(row.kind, sys, only), event_root(row.kind, sys, x))
+          << "event " << static_cast<int>(row.kind) << (unloading ? ", unloading" : ", loading");
+    }
+  }
+}
+
+TEST(ImpactEvents, RootsReadOnlyTheComponentsTheLocatorInterpolates) {
+  expect_roots_read_only_event_components(plastic_system(), {0.1, 0.9, 0.2, 0.05, 0.04, 0.01});
+  ImpactSystem<HuntCrossleyLaw, false> hc;
+  hc.law = {1.0, 0.2};
+  expect_roots_read_only_event_components(hc, {0.2, -0.3, 0.05, 0.04});
 }
 
 }  // namespace

@@ -49,6 +49,9 @@ struct ImpactSystem {
   static constexpr std::size_t J = Dashpot ? 3 : 2;
   static constexpr std::size_t WA = J + 1;
   static constexpr std::size_t WV = Dashpot ? 5 : N;  // == N: absent
+  // The components every event root reads (impact_events.h: z, w and the force of z and w):
+  // the event locator interpolates only these.
+  static constexpr std::array<std::size_t, 2> event_components = {Dashpot ? Z : A, W};
 
   Law law;
   history_type branch;

@@ -1,9 +1,13 @@
 #include "solver/sweep.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -115,17 +119,6 @@ int column_index(std::string_view name) {
     throw std::logic_error("sweep CSV header has no column '" + std::string(name) + "'");
   return static_cast<int>(std::count(header.begin(), header.begin() + at, ',')) + 1;
 }
-std::string_view field_of(std::string_view row, int field) {
-  std::size_t pos = 0;
-  for (int f = 0; f < field && pos != std::string_view::npos; ++f) {
-    pos = row.find(',', pos);
-    if (pos != std::string_view::npos) ++pos;
-  }
-  if (pos == std::string_view::npos) return {};
-  const std::size_t end = row.find_first_of(",\n", pos);
-  return row.substr(pos, end == std::string_view::npos ? row.npos : end - pos);
-}
-
 [[noreturn]] void io_error(const fs::path& path, const std::string& what) {
   throw std::runtime_error("cannot write " + path.string() + ": " + what);
 }
@@ -412,9 +405,22 @@ std::size_t SweepSink::done() const {
 void SweepSink::count(const std::string& row) {
   static const int status = column_index("status"), route = column_index("route"),
                    integrator = column_index("integrator");
-  ++counts_.routes[std::string(field_of(row, route))];
-  ++counts_.integrators[std::string(field_of(row, integrator))];
-  const std::string_view s = field_of(row, status);
+  // the three columns in one pass over the row
+  std::array<std::string_view, 3> fields;  // route, integrator, status
+  const std::array<int, 3> wanted = {route, integrator, status};
+  std::size_t pos = 0;
+  for (int f = 0, got = 0; got < 3 && pos <= row.size(); ++f) {
+    const std::size_t end = std::min(row.find(',', pos), row.size());
+    for (int k = 0; k < 3; ++k)
+      if (wanted[k] == f) {
+        fields[k] = std::string_view(row).substr(pos, end - pos);
+        ++got;
+      }
+    pos = end + 1;
+  }
+  ++counts_.routes[std::string(fields[0])];
+  ++counts_.integrators[std::string(fields[1])];
+  const std::string_view s = fields[2];
   if (s == to_string(ImpactStatus::separated))
     ++counts_.separated;
   else if (s == to_string(ImpactStatus::captured))
@@ -448,8 +454,16 @@ std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
 
 void SweepSink::record(std::size_t index, const std::string& row) {
   if (index < next_write_ || pending_.count(index)) return;  // delivered before: keep the first
-  if (std::fprintf(journal_, "%zu %016llx %s", index, static_cast<unsigned long long>(fnv1a(row)),
-                   row.c_str()) < 0)
+  // "index checksum row" as printf's "%zu %016llx %s" wrote it, formatted here (once a point)
+  char head[48];
+  char* p = std::to_chars(head, head + 20, index).ptr;
+  *p++ = ' ';
+  const std::uint64_t sum = fnv1a(row);
+  for (int shift = 60; shift >= 0; shift -= 4) *p++ = "0123456789abcdef"[(sum >> shift) & 0xf];
+  *p++ = ' ';
+  if (std::fwrite(head, 1, static_cast<std::size_t>(p - head), journal_) !=
+          static_cast<std::size_t>(p - head) ||
+      std::fwrite(row.data(), 1, row.size(), journal_) != row.size())
     io_error(journal_path(), std::strerror(errno));
   count(row);
   ++delivered_;
@@ -459,8 +473,12 @@ void SweepSink::record(std::size_t index, const std::string& row) {
 void SweepSink::deliver(std::size_t index, const std::string& row) {
   std::lock_guard lock(mutex_);
   record(index, row);
-  if (std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
   write_ready();
+}
+
+void SweepSink::flush() {
+  std::lock_guard lock(mutex_);
+  if (std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
 }
 
 void SweepSink::deliver(const std::vector<std::pair<std::size_t, std::string>>& rows) {
@@ -557,6 +575,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
     } catch (const ParallelError& e) {
       std::rethrow_exception(e.cause());
     }
+    sink.flush();  // once a chunk: a SIGKILL loses at most this chunk's points
   }
 }
 

@@ -213,10 +213,17 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   }
 
   void interpolate(const System& sys, T t, state_type& out) const {
+    interpolate(sys, t, out, all_components<N>());
+  }
+  // The components listed in `which` only (the rest of `out` untouched): the event locator's
+  // root functions read two of the six (ImpactSystem::event_components).
+  template <std::size_t K>
+  void interpolate(const System& sys, T t, state_type& out,
+                   const std::array<std::size_t, K>& which) const {
     if (!dense_ready_) prepare_dense(sys);
     const T th = (t - t0_) / (t1_ - t0_);
     const T s1 = 1 - th;
-    for (std::size_t m = 0; m < out.size(); ++m)
+    for (const std::size_t m : which)
       out[m] =
           x0_[m] +
           th * (r_[0][m] +

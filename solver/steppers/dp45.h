@@ -120,12 +120,19 @@ class Dp45Stepper : public AdaptiveStepState<System> {
     return StepResult::failure(os.str());
   }
 
-  void interpolate(const System&, T t, state_type& out) const {
+  void interpolate(const System& sys, T t, state_type& out) const {
+    interpolate(sys, t, out, all_components<std::tuple_size_v<state_type>>());
+  }
+  // The components listed in `which` only (the rest of `out` untouched): the event locator's
+  // root functions read two (ImpactSystem::event_components).
+  template <std::size_t K>
+  void interpolate(const System&, T t, state_type& out,
+                   const std::array<std::size_t, K>& which) const {
     using namespace dp45_tableau;
     const T h = t1_ - t0_;
     const T th = (t - t0_) / h;
     const T om = 1 - th;
-    for (std::size_t i = 0; i < out.size(); ++i) {
+    for (const std::size_t i : which) {
       const T r1 = x1_[i] - x0_[i];
       const T r2 = h * k1_[i] - r1;
       const T r3 = r1 - h * k7_[i] - r2;

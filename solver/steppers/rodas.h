@@ -317,11 +317,18 @@ class Rodas4Stepper : public AdaptiveStepState<System> {
     return fail(os.str());
   }
 
-  void interpolate(const System&, T t, state_type& out) const {
+  void interpolate(const System& sys, T t, state_type& out) const {
+    interpolate(sys, t, out, all_components<N>());
+  }
+  // The components listed in `which` only (the rest of `out` untouched): the event locator's
+  // root functions read two (ImpactSystem::event_components).
+  template <std::size_t K>
+  void interpolate(const System&, T t, state_type& out,
+                   const std::array<std::size_t, K>& which) const {
     if (!dense_ready_) prepare_dense();
     const T th = (t - t0_) / (t1_ - t0_);
     const T s1 = 1 - th;
-    for (std::size_t i = 0; i < N; ++i)
+    for (const std::size_t i : which)
       out[i] = s1 * x0_[i] + th * (x1_[i] + s1 * (r_[0][i] + th * r_[1][i]));
   }
 

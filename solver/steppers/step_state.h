@@ -11,10 +11,21 @@
 // fixed_step, fixed_step_mode, reference) stay its own.
 #pragma once
 
+#include <array>
+#include <cstddef>
+
 #include "solver/integrator_options.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {
+
+// {0, 1, ..., N - 1}: every component, for a stepper's interpolate(sys, t, out, which).
+template <std::size_t N>
+constexpr std::array<std::size_t, N> all_components() {
+  std::array<std::size_t, N> all{};
+  for (std::size_t i = 0; i < N; ++i) all[i] = i;
+  return all;
+}
 
 template <class System>
 class StepState {
