@@ -87,6 +87,9 @@ constexpr double kDirectIntegralMaxRatio = 0.5;
 //   integral w ds   = A Im[e^{i phi} (e^{pT} - 1)/p]
 //   2a integral w^2 = A^2 (1/2)[-expm1(-2aT) - 2a Re(e^{2 i phi}(e^{2pT} - 1)/(2p))]
 //   W_v = K^2/c integral w^2 = K (2a integral w^2).
+// With X = (w'(0) + a w(0))/b, A e^{i phi} = X + i w(0), so e^{i phi} = (X + i w0)/A and
+// e^{2 i phi} its square; e^{2pT} = (e^{pT})^2 and 1/p = conj(p)/|p|^2: one exp, one sin and
+// one cos a phase (the linearized closed form is a benchmark target, issue 20).
 // Any regime, identities of the phase equation (multiply it by 1, by w', by w, integrate):
 //   K integral w ds   = m [(w'(0) - w'(T)) + 2a (w(0) - w(T))]
 //   W_v = 2aK integral w^2 = m (E(0) - E(T)) - 2 m a [w w']_0^T - 2 m a^2 [w^2]_0^T,
@@ -96,16 +99,18 @@ PhaseIntegrals phase_integrals(const Phase& p, double w0, double w_dot0, double 
   const double zeta = p.ratio();
   if (zeta <= kDirectIntegralMaxRatio) {
     const double b = p.omega * std::sqrt((1.0 - zeta) * (1.0 + zeta));
-    const double A = std::hypot(w0, (w_dot0 + p.a * w0) / b);
-    const double phi = std::atan2(w0, (w_dot0 + p.a * w0) / b);
-    const std::complex<double> pc(-p.a, b);
-    const std::complex<double> rot1 = std::polar(1.0, phi);
-    const std::complex<double> rot2 = std::polar(1.0, 2.0 * phi);
-    const double int_w = A * std::imag(rot1 * (std::exp(pc * T) - 1.0) / pc);
+    const double X = (w_dot0 + p.a * w0) / b;
+    const std::complex<double> amplitude(X, w0);  // A e^{i phi}
+    const std::complex<double> inverse_p = std::complex<double>(-p.a, -b) / (p.a * p.a + b * b);
+    const double decay = T == kInf ? 0.0 : std::exp(-p.a * T);
+    const std::complex<double> epT =
+        T == kInf ? std::complex<double>(0.0)
+                  : decay * std::complex<double>(std::cos(b * T), std::sin(b * T));
+    const double int_w = std::imag(amplitude * (epT - 1.0) * inverse_p);
+    // A^2 e^{2 i phi} = amplitude^2
     const double two_a_int_w2 =
-        A * A * 0.5 *
-        (-std::expm1(-2.0 * p.a * T) -
-         2.0 * p.a * std::real(rot2 * (std::exp(2.0 * pc * T) - 1.0) / (2.0 * pc)));
+        0.5 * (std::norm(amplitude) * -std::expm1(-2.0 * p.a * T) -
+               p.a * std::real(amplitude * amplitude * (epT * epT - 1.0) * inverse_p));
     return {p.K * int_w, p.K * two_a_int_w2};
   }
   const double m = p.K / (p.omega * p.omega);
