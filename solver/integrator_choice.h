@@ -67,7 +67,10 @@
 // elastic impacts of the elastoplastic law) the force z^{3/2} has an unbounded second
 // derivative at separation, the embedded error estimate of the last steps is not asymptotic,
 // and the autochoice.model case measured 145 rtol (Hertz law, v0 = 5 m/s, zeta = 0.1, rtol =
-// atol = 1e-10, 27 steps) and 31 rtol (elastoplastic, elastic at 0.05 m/s). rodas4 against
+// atol = 1e-10, 27 steps) and 31 rtol (elastoplastic, elastic at 0.05 m/s). Since the step
+// over such a separation is retaken to end there (impact_driver.h, retake_to_separation) the
+// same two scenes measure 3.3 and 4.5 rtol against mp50 (F_max the largest), but the 200 is
+// kept: it is what the autochoice cases hold over their whole grids. rodas4 against
 // dop853 at 1e-13 (max over F_max, z_max relative and e in v0): on the autochoice case's stiff
 // scene (v0 = 1 m/s, zeta = 100, rtol 1e-6, 1e-8, 1e-10) 5.4, 0.19 and 38 rtol; on the wider
 // grid v0 = 0.3, 1, 5 m/s x zeta = 30, 100, 1000 x rtol = 1e-6 ... 1e-12, 172 rtol at worst
