@@ -88,24 +88,21 @@ constexpr double kDirectIntegralMaxRatio = 0.5;
 //   2a integral w^2 = A^2 (1/2)[-expm1(-2aT) - 2a Re(e^{2 i phi}(e^{2pT} - 1)/(2p))]
 //   W_v = K^2/c integral w^2 = K (2a integral w^2).
 // With X = (w'(0) + a w(0))/b, A e^{i phi} = X + i w(0), so e^{i phi} = (X + i w0)/A and
-// e^{2 i phi} its square; e^{2pT} = (e^{pT})^2 and 1/p = conj(p)/|p|^2: one exp, one sin and
-// one cos a phase (the linearized closed form is a benchmark target, issue 20).
+// e^{2 i phi} its square; e^{2pT} = (e^{pT})^2 and 1/p = conj(p)/|p|^2. e^{pT} = e^{-aT}
+// (cos bT + i sin bT) is the caller's, who knows it from the phase's end without a sin, cos
+// or exp (the linearized closed form is a benchmark target, issue 20).
 // Any regime, identities of the phase equation (multiply it by 1, by w', by w, integrate):
 //   K integral w ds   = m [(w'(0) - w'(T)) + 2a (w(0) - w(T))]
 //   W_v = 2aK integral w^2 = m (E(0) - E(T)) - 2 m a [w w']_0^T - 2 m a^2 [w^2]_0^T,
 //   with E = w'^2/2 + omega^2 w^2/2 and m = K/omega^2.
 PhaseIntegrals phase_integrals(const Phase& p, double w0, double w_dot0, double T,
-                               const PhaseState& end) {
+                               const PhaseState& end, std::complex<double> epT) {
   const double zeta = p.ratio();
   if (zeta <= kDirectIntegralMaxRatio) {
     const double b = p.omega * std::sqrt((1.0 - zeta) * (1.0 + zeta));
     const double X = (w_dot0 + p.a * w0) / b;
     const std::complex<double> amplitude(X, w0);  // A e^{i phi}
     const std::complex<double> inverse_p = std::complex<double>(-p.a, -b) / (p.a * p.a + b * b);
-    const double decay = T == kInf ? 0.0 : std::exp(-p.a * T);
-    const std::complex<double> epT =
-        T == kInf ? std::complex<double>(0.0)
-                  : decay * std::complex<double>(std::cos(b * T), std::sin(b * T));
     const double int_w = std::imag(amplitude * (epT - 1.0) * inverse_p);
     // A^2 e^{2 i phi} = amplitude^2
     const double two_a_int_w2 =
@@ -193,8 +190,12 @@ LinearImpact solve_linear_model(const LinearModelInput& in) {
   // Closed loop integral F dz: loading triangle minus unloading triangle (see header).
   r.W_p = 0.5 * in.K_y * r.z_max * r.z_max * (1.0 - gamma2);
 
+  // e^{p t_m} of the loading phase: b t_m = atan2(x, zeta) with x = sqrt(1 - zeta^2), so
+  // cos = zeta and sin = x, and e^{-a t_m} = z_m omega0/v0 (used where zeta <= 1/2 only)
+  const double x0 = std::sqrt(std::max(0.0, (1.0 - zeta) * (1.0 + zeta)));
   const PhaseIntegrals load_int =
-      phase_integrals(loading, 0.0, v0, r.t_max, PhaseState{r.z_max, 0.0});
+      phase_integrals(loading, 0.0, v0, r.t_max, PhaseState{r.z_max, 0.0},
+                      (r.z_max * omega0 / v0) * std::complex<double>(zeta, x0));
   const double y_scale = 2.0 * zeta / omega0;  // m/c [s]
 
   r.captured = r.zeta_unload >= 1.0;
@@ -202,7 +203,7 @@ LinearImpact solve_linear_model(const LinearModelInput& in) {
     // w -> 0 and w' -> 0 as t -> inf; the impactor comes to rest (alpha' -> 0+, monotone
     // because alpha'' = -F/m < 0), so t_c = inf and alpha_c = z_f + y(inf), y(inf) = m v0/c.
     const PhaseIntegrals unload_int =
-        phase_integrals(unloading, w0, 0.0, kInf, PhaseState{0.0, 0.0});
+        phase_integrals(unloading, w0, 0.0, kInf, PhaseState{0.0, 0.0}, 0.0);
     r.t_contact = kInf;
     r.e = 0.0;
     r.t_alpha_max = kInf;
@@ -220,15 +221,18 @@ LinearImpact solve_linear_model(const LinearModelInput& in) {
   const double b1 = r.omega_unload * x1;
   const double s_f = (std::numbers::pi - phi1) / b1;
   const double s_c = (std::numbers::pi - 2.0 * phi1) / b1;
-  const double rebound = w0 * r.omega_unload * std::exp(-unloading.a * s_f);  // -w'(s_f)
+  const double decay_f = std::exp(-unloading.a * s_f);
+  const double rebound = w0 * r.omega_unload * decay_f;  // -w'(s_f)
   r.t_contact = r.t_max + s_f;
   r.e = rebound / v0;
   r.t_alpha_max = r.t_max + s_c;
   r.y_final = y_scale * (v0 + rebound);
   // z(t_c) = z_f + w0 e^{-a1 s_c} (sin(b1 s_c + phi1) = sin(phi1)); y(t_c) = (m/c) v0.
   r.alpha_max = r.z_perm + w0 * std::exp(-unloading.a * s_c) + y_scale * v0;
+  // e^{p s_f}: b1 s_f = pi - phi1, so cos = -zeta1 and sin = x1
   const PhaseIntegrals unload_int =
-      phase_integrals(unloading, w0, 0.0, s_f, PhaseState{0.0, -rebound});
+      phase_integrals(unloading, w0, 0.0, s_f, PhaseState{0.0, -rebound},
+                      decay_f * std::complex<double>(-zeta1, x1));
   r.impulse = load_int.impulse + unload_int.impulse;
   r.W_v = load_int.W_v + unload_int.W_v;
   r.energy_final = 0.5 * in.mass * rebound * rebound;
