@@ -139,7 +139,7 @@ std::vector<std::size_t> coordinate(World& world, const SweepRequest& req, Sweep
   std::mutex progress_mutex;
   std::vector<std::size_t> computed(static_cast<std::size_t>(world.size()), 0);
   SweepRunOptions local = options;
-  local.chunk = chunk;
+  local.batch = std::min(chunk, options.batch);
   local.progress = [&](std::size_t done, std::size_t total) {
     std::lock_guard lock(progress_mutex);
     if (options.progress) options.progress(done, total);

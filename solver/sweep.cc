@@ -353,6 +353,9 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   partial_ = std::fopen(partial.c_str(), "wb");
   if (!partial_)
     throw InputError("--out", "cannot write " + partial.string() + ": " + std::strerror(errno));
+  // 1 MiB, not stdio's 4 KiB: a 300 x 300 map's 17 MB are 17 writes, not 4,200
+  partial_buffer_.resize(std::size_t{1} << 20);  // glibc ignores a size without a buffer
+  std::setvbuf(partial_, partial_buffer_.data(), _IOFBF, partial_buffer_.size());
   if (std::fputs(sweep_csv_header().c_str(), partial_) < 0) io_error(partial, std::strerror(errno));
   // The journal: every finished point as "index checksum row", the checksum FNV-1a of the row
   // (with its newline). A row whose checksum, index or inputs do not match is not trusted: it
@@ -365,6 +368,9 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
   journal_ = std::fopen(journal.c_str(), have_journal ? "ab" : "wb");
   if (!journal_)
     throw InputError("--out", "cannot write " + journal.string() + ": " + std::strerror(errno));
+  // room for a batch of rows (SweepRunOptions::batch): one write a flush
+  journal_buffer_.resize(std::size_t{1} << 16);
+  std::setvbuf(journal_, journal_buffer_.data(), _IOFBF, journal_buffer_.size());
   if (!have_journal &&
       (std::fprintf(journal_, "%s\n", journal_header) < 0 || std::fflush(journal_) != 0))
     io_error(journal, std::strerror(errno));
@@ -473,12 +479,8 @@ void SweepSink::record(std::size_t index, const std::string& row) {
 void SweepSink::deliver(std::size_t index, const std::string& row) {
   std::lock_guard lock(mutex_);
   record(index, row);
-  write_ready();
-}
-
-void SweepSink::flush() {
-  std::lock_guard lock(mutex_);
   if (std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
+  write_ready();
 }
 
 void SweepSink::deliver(const std::vector<std::pair<std::size_t, std::string>>& rows) {
@@ -556,26 +558,32 @@ bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_com
 }
 
 void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOptions& opt) {
+  // Each worker takes a batch of points, computes it and delivers it in one call: one lock of
+  // the sink and one journal flush a batch. Delivering point by point (a chunk of 256 per
+  // parallel_for, three locks a point) made two threads contend: 13,849 context switches and
+  // 21 % more CPU time than one thread on the 300 x 300 map (perf stat).
   std::mutex progress_mutex;
-  while (true) {
-    if (opt.stop && *opt.stop) sink.request_stop();
-    const std::vector<std::size_t> chunk = sink.take(opt.chunk, true);
-    if (chunk.empty()) break;  // take() blocks until work is available or none is left
-    ParallelOptions po;
-    po.threads = req.threads;
-    po.stop = opt.stop;
-    try {
-      parallel_for(chunk.size(), po, [&](std::size_t j) {
-        sink.deliver(chunk[j], run_sweep_point(req, chunk[j]));
-        if (opt.progress) {
+  ParallelOptions po;
+  po.threads = worker_count(sink.total(), req.threads);
+  try {
+    parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t) {
+      std::vector<std::pair<std::size_t, std::string>> rows;
+      for (;;) {
+        if (opt.stop && *opt.stop) sink.request_stop();
+        const std::vector<std::size_t> batch = sink.take(opt.batch, true);
+        if (batch.empty()) return;  // take() blocks until work is available or none is left
+        rows.clear();
+        for (const std::size_t i : batch) rows.emplace_back(i, run_sweep_point(req, i));
+        sink.deliver(rows);
+        if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);
-          opt.progress(sink.done(), sink.total());
+          const std::size_t done = sink.done();
+          for (std::size_t k = 0; k < rows.size(); ++k) opt.progress(done, sink.total());
         }
-      });
-    } catch (const ParallelError& e) {
-      std::rethrow_exception(e.cause());
-    }
-    sink.flush();  // once a chunk: a SIGKILL loses at most this chunk's points
+      }
+    });
+  } catch (const ParallelError& e) {
+    std::rethrow_exception(e.cause());
   }
 }
 
