@@ -573,7 +573,13 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         const std::vector<std::size_t> batch = sink.take(opt.batch, true);
         if (batch.empty()) return;  // take() blocks until work is available or none is left
         rows.clear();
-        for (const std::size_t i : batch) rows.emplace_back(i, run_sweep_point(req, i));
+        try {
+          for (const std::size_t i : batch) rows.emplace_back(i, run_sweep_point(req, i));
+        } catch (...) {
+          sink.request_stop();  // the other workers take no more: the sweep ends with this
+          sink.deliver(rows);   // the points done before it stay in the journal
+          throw;
+        }
         sink.deliver(rows);
         if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);
