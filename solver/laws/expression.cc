@@ -226,6 +226,8 @@ double ExpressionLaw<Rate>::step(double scale, double at) {
 
 template <bool Rate>
 void ExpressionLaw<Rate>::begin_unloading(Branch<double>& h, double z_m) const {
+  if (!std::isfinite(z_m))  // the bisection below would never end on a NaN bracket
+    throw LawDomainError("unloading from a maximum compression z_m that is not a finite number");
   h.phase = Phase::unloading;
   h.z_max = z_m;
   auto F = [&](double z) { return expr->unloading(z, 0.0, z_m); };

@@ -108,6 +108,16 @@ TEST(ExpressionLaw, UnloadingRecordsThePermanentSetOfItsExpression) {
   EXPECT_NEAR(law.stored_energy(h, z_m), stored, 1e-10 * stored);
 }
 
+// A NaN maximum compression (a NaN state reached at the event) is the law's domain error, not
+// a bisection of [0, NaN] that never ends (found when a trial root finder returned such a
+// state on the NonFiniteForce tests below: the run hung).
+TEST(ExpressionLaw, UnloadingFromANonFiniteMaximumIsADomainError) {
+  const auto expr = compile("K_h*z^1.5", "K_h*z^1.5 - K_h*zmax^1.5 + 1");
+  const ExpressionLaw<false> law{expr, false};
+  Branch<double> h;
+  EXPECT_THROW(law.begin_unloading(h, std::nan("")), LawDomainError);
+}
+
 TEST(ExpressionLaw, SimulateGivesTheBuiltInLawsCorToTheIntegratorsTolerance) {
   SimulationRequest builtin;
   builtin.scene = paper_scene();
