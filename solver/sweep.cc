@@ -503,34 +503,24 @@ void SweepSink::write_ready() {
 
 bool SweepSink::finish_with_sidecar(
     const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar) {
-  std::lock_guard lock(mutex_);
-  const fs::path partial = options_.csv.string() + ".partial";
-  if (next_write_ < total_) {
-    std::fflush(partial_);
-    std::fflush(journal_);
-    return false;
-  }
-  const int closed = std::fclose(partial_);
-  partial_ = nullptr;
-  if (closed != 0) io_error(partial, std::strerror(errno));
-  StagedFile csv(options_.csv, [&](std::ostream& out) {
-    std::ifstream in(partial, std::ios::binary);
-    out << in.rdbuf();
+  return commit_csv([&](StagedFile& csv) {
+    std::optional<StagedFile> sidecar;
+    if (!options_.sidecar.empty())
+      sidecar.emplace(options_.sidecar, [&](std::ostream& out) { write_sidecar(counts_, out); });
+    if (sidecar) fs::remove(sidecar->target());  // from here until its commit: no sidecar
+    csv.commit();
+    if (sidecar) sidecar->commit();
   });
-  std::optional<StagedFile> sidecar;
-  if (!options_.sidecar.empty())
-    sidecar.emplace(options_.sidecar, [&](std::ostream& out) { write_sidecar(counts_, out); });
-  if (sidecar) fs::remove(sidecar->target());  // from here until its commit: no sidecar
-  csv.commit();
-  if (sidecar) sidecar->commit();
-  std::fclose(journal_);
-  journal_ = nullptr;
-  fs::remove(journal_path());  // first: a journal never outlives its partial CSV
-  fs::remove(partial);
-  return true;
 }
 
 bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_commit) {
+  return commit_csv([&](StagedFile& csv) {
+    if (before_commit) before_commit(counts_);
+    csv.commit();
+  });
+}
+
+bool SweepSink::commit_csv(const std::function<void(StagedFile& csv)>& between) {
   std::lock_guard lock(mutex_);
   const fs::path partial = options_.csv.string() + ".partial";
   if (next_write_ < total_) {
@@ -542,14 +532,12 @@ bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_com
   partial_ = nullptr;
   if (closed != 0) io_error(partial, std::strerror(errno));
   // the CSV is copied to its temporary first, so that between `before_commit` (the sidecar)
-  // and the CSV's rename there is one rename, not the copy of the whole file (issue 21 item 9;
-  // finish_with_sidecar closes that window too)
+  // and the CSV's rename there is one rename, not the copy of the whole file (issue 21 item 9)
   StagedFile csv(options_.csv, [&](std::ostream& out) {
     std::ifstream in(partial, std::ios::binary);
     out << in.rdbuf();
   });
-  if (before_commit) before_commit(counts_);
-  csv.commit();
+  between(csv);
   std::fclose(journal_);
   journal_ = nullptr;
   fs::remove(journal_path());  // first: a journal never outlives its partial CSV

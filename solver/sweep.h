@@ -29,6 +29,8 @@
 
 namespace ivv {
 
+class StagedFile;  // solver/atomic_file.h
+
 struct SweepRequest {
   SimulationRequest base;          // scene, law, integrator and options shared by every point
   std::vector<double> velocities;  // v0 [m/s]
@@ -152,6 +154,10 @@ class SweepSink {
   std::filesystem::path journal_path() const;
 
  private:
+  // finish() and finish_with_sidecar(): while points are missing, flushes journal and partial
+  // for --resume and returns false; otherwise stages the CSV (a copy of the partial), calls
+  // `between`, which commits it (and a sidecar around it), then removes journal and partial.
+  bool commit_csv(const std::function<void(StagedFile& csv)>& between);
   void write_ready();                                      // caller holds mutex_
   void record(std::size_t index, const std::string& row);  // caller holds mutex_
   void count(const std::string& row);
