@@ -90,11 +90,11 @@ std::optional<std::pair<T, T>> anderson_bjorck(G& g, T a, T b, T fa, T fb, Tol t
 
 // Solves a bracket [a, b] with g(a) strictly before the event and g(b) after it (or zero) by
 // anderson_bjorck, else TOMS 748, and returns the post-event end of the final bracket. When
-// TOMS 748 uses up
-// max_iterations first, bisection finishes the bracket (it halves the bracket whatever the
-// rounding noise of g, which can stall TOMS 748's interpolation steps: measured, the 50-digit
-// reference near capture stopped at a relative width of 1.5e-20 against 2^-165 asked). Throws
-// EventLocationError if max_iterations bisections do not reach the tolerance of `bits` either.
+// TOMS 748 uses up max_iterations first, bisection finishes the bracket (it halves the bracket
+// whatever the rounding noise of g, which can stall TOMS 748's interpolation steps: measured, the
+// 50-digit reference near capture stopped at a relative width of 1.5e-20 against 2^-165 asked).
+// Throws EventLocationError if max_iterations bisections do not reach the tolerance of `bits`
+// either.
 template <class T, class G>
 T solve_crossing(G&& g, const T& a, const T& b, const T& ga, const T& gb, Direction dir,
                  const LocatorOptions& opt = {}) {

@@ -21,6 +21,22 @@ TEST(EventLocator, FindsSimpleRisingRoot) {
   EXPECT_GE(g(*t), 0.0);  // returned on the post-event side
 }
 
+// solve_crossing tries Anderson-Bjorck first and hands a bracket where g is NaN to TOMS 748 as
+// before: a g that is NaN on part of the bracket (a law outside its domain) ends in a named
+// EventLocationError, never a hang or a root placed in the NaN (the first trial without the
+// fallback hung). A root of z^{3/2} type (F at an elastic separation) converges all the same.
+TEST(EventLocator, NaNInTheBracketIsANamedFailureAndAHertzianRootConverges) {
+  // the first secant from g(0) = -0.3, g(1) = 0.01 lands at 0.97, where g is NaN
+  auto g = [](double t) { return t < 0.5 ? t - 0.3 : t > 0.99 ? 0.01 : std::nan(""); };
+  EXPECT_THROW(solve_crossing(g, 0.0, 1.0, g(0.0), g(1.0), Direction::rising), EventLocationError);
+  auto hertzian = [](double t) {
+    return 0.4 - t > 0 ? std::pow(0.4 - t, 1.5) : -std::pow(t - 0.4, 1.5);
+  };
+  const double th =
+      solve_crossing(hertzian, 0.0, 1.0, hertzian(0.0), hertzian(1.0), Direction::falling);
+  EXPECT_NEAR(th, 0.4, 1e-14);
+}
+
 TEST(EventLocator, FindsFallingRootOfCosine) {
   auto g = [](double t) { return std::cos(t); };
   const auto t = locate_first_crossing(g, 0.0, 2.0, 1.0, Direction::falling);
