@@ -4,17 +4,21 @@
 //   StepState          the step's ends and the count (the base of every stepper written here)
 //   AdaptiveStepState  adds the tolerances rtol/atol, the step h to try next and fixed-step
 //                      mode (IntegratorOptions::fixed_step: error control off, h = dt), and
-//                      accept(h, next) for the error-controlled one-step methods (dop853, dp45,
-//                      rodas4)
+//                      controlled_step(), the attempts of one step under the one step
+//                      controller (step_controller.h), for the error-controlled one-step
+//                      methods (dop853, dp45, rodas4)
 // HermiteSteps (hermite.h) adds the end derivatives and the cubic Hermite interpolant for the
 // steppers without a dense output. A stepper's traits (name, order, implicit, dense_output,
 // fixed_step, fixed_step_mode, reference) stay its own.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <string_view>
 
 #include "solver/integrator_options.h"
+#include "solver/steppers/step_controller.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {
@@ -26,6 +30,21 @@ constexpr std::array<std::size_t, N> all_components() {
   for (std::size_t i = 0; i < N; ++i) all[i] = i;
   return all;
 }
+
+// Sizes v as x when the state type has a run-time size (std::vector: the finite plate's state);
+// nothing for std::array. Steppers size their work vectors so in start(), never per step.
+template <class State>
+void size_like(State& v, const State& x) {
+  if constexpr (requires { v.resize(x.size()); }) v.resize(x.size());
+}
+
+// What one attempt of a controlled step reports: its error norm, or a failure that no smaller
+// step can cure (a singular iteration matrix).
+template <class T>
+struct AttemptOutcome {
+  T norm{};
+  StepFailure failure = StepFailure::none;
+};
 
 template <class System>
 class StepState {
@@ -66,6 +85,31 @@ class AdaptiveStepState : public StepState<System> {
         fixed_(opt.fixed_step),
         h_(opt.fixed_step ? opt.fixed_dt() : opt.initial_dt) {}
 
+  // The attempts of one step from (t0, x0): attempt(h) computes x1 for a step of length h and
+  // returns its error norm (AttemptOutcome); the controller of step_controller.h, with the
+  // stepper's error exponent Q, accepts, retries or fails. On failure t1 = t0, x1 = x0.
+  template <int Q, class Attempt>
+  StepResult controlled_step(std::string_view stepper, Attempt&& attempt) {
+    StepController<T, Q> control;
+    control.begin();
+    for (;;) {
+      const T h = h_;
+      const AttemptOutcome<T> outcome = attempt(h);
+      if (outcome.failure != StepFailure::none)
+        return fail(stepper, outcome.failure, control.attempts());
+      if (fixed_) {
+        if (std::isfinite(static_cast<double>(outcome.norm))) return accept(h, h);
+        return fail(stepper, StepFailure::non_finite_state, 1);
+      }
+      T next{};
+      const StepVerdict verdict = control.judge(h, outcome.norm, this->t0_, next);
+      if (verdict.action == StepVerdict::Action::accept) return accept(h, next);
+      h_ = next;
+      if (verdict.action == StepVerdict::Action::fail)
+        return fail(stepper, verdict.failure, control.attempts());
+    }
+  }
+
   // The attempt of length h from t0 passed: t1 = t0 + h, and `next` is the step to try next
   // (ignored in fixed-step mode, where h stays dt).
   StepResult accept(T h, T next) {
@@ -73,6 +117,15 @@ class AdaptiveStepState : public StepState<System> {
     if (!fixed_) h_ = next;
     ++this->steps_;
     return StepResult::success();
+  }
+
+  // A failed step leaves the stepper at its start (t1 = t0, x1 = x0), with the one message.
+  StepResult fail(std::string_view stepper, StepFailure code, int attempts) {
+    this->t1_ = this->t0_;
+    this->x1_ = this->x0_;
+    return StepResult::failure(code,
+                               step_failure_message(stepper, code, static_cast<double>(this->t0_),
+                                                    static_cast<double>(rtol_), attempts));
   }
 
   T rtol_, atol_;
