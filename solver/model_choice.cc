@@ -106,7 +106,7 @@ void check_closed_form(ImpactResult& r, const Scene& scene, const DerivedParamet
   const std::string why = consistency_failure(c, opt, what);
   if (!why.empty()) {
     r.status = ImpactStatus::failed;
-    r.failure = FailureKind::integrator;
+    r.failure = FailureKind::inconsistent;
     r.reason = why;
   }
 }
