@@ -19,7 +19,7 @@ namespace {
 
 // Closed forms evaluated in double precision: tens of roundings of ~1.1e-16 each.
 constexpr double kRoundOff = 1e-13;
-// SPEC §1 / the brief: the energy ledger and the impulse close to 1e-12 relative.
+// docs/design.md §1 / the brief: the energy ledger and the impulse close to 1e-12 relative.
 constexpr double kLedgerTol = 1e-12;
 
 LinearModelInput paper_input(double v0, double zeta) {
@@ -31,7 +31,7 @@ LinearModelInput paper_input(double v0, double zeta) {
 }
 
 TEST(LinearModel, PaperDashpotGivesZetaOfOneTenth) {
-  // SPEC §1: with c = 11440 N s/m, zeta ~ 0.1. 11440 is given to four digits, so zeta is
+  // docs/design.md §1: with c = 11440 N s/m, zeta ~ 0.1. 11440 is given to four digits, so zeta is
   // 0.1 to within a unit of the fourth digit (5e-4 relative on c).
   constexpr double kFourDigits = 1e-4;
   const Scene s = paper_scene();
@@ -261,7 +261,7 @@ TEST(LinearModel, TrajectorySatisfiesTheEquationsOfMotion) {
 }
 
 TEST(LinearModel, RestitutionFallsWithDampingAndVelocity) {
-  // Paper Fig. 14 trend (SPEC §3), in the closed form.
+  // Paper Fig. 14 trend (docs/design.md §3), in the closed form.
   double previous = 1.0;
   for (double zeta : {0.0, 0.05, 0.1, 0.2, 0.3}) {
     const double e = solve_linear_model(paper_input(1.0, zeta)).e;

@@ -26,7 +26,7 @@ RestitutionSection restitution_section(const SectionOptions& options) {
     p.x_label = "v0/v_y [-]";
     p.y_label = "coefficient of restitution e [-]";
     p.log_x = p.log_y = true;
-    Series closed = curve("closed form (energy, SPEC §2)");
+    Series closed = curve("closed form (energy, docs/design.md §2)");
     for (std::size_t i = 0; i < undamped.curve_ratio.size(); ++i)
       if (undamped.curve_ratio[i] >= 1.0)
         add(closed, undamped.curve_ratio[i], undamped.curve_e_closed_form[i]);
@@ -162,7 +162,7 @@ RestitutionSection restitution_section(const SectionOptions& options) {
          "Each map picks μ from a target e; the exact Hunt-Crossley restitution "
          "e = [1 + W<sub>0</sub>(−(1+u<sub>0</sub>) "
          "e<sup>−(1+u<sub>0</sub>)</sup>)]/u<sub>0</sub>, "
-         "u<sub>0</sub> = μv<sub>0</sub> (SPEC §2, closed_forms/hunt_crossley.h), says what it "
+         "u<sub>0</sub> = μv<sub>0</sub> (docs/design.md §2, closed_forms/hunt_crossley.h), says what it "
          "really delivers, independently of K, m and v<sub>0</sub> (curves); the points are "
          "simulations at the targets of <code>reference_data/hunt_crossley_mu_maps.csv</code>. "
          "On the diagonal a map is exact.",
