@@ -193,12 +193,16 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     x0_ = x1_;
     k_[0] = k_[12];
     dense_ready_ = false;
-    const StepResult r = this->template controlled_step<error_exponent>(name, [&](T h) {
+    this->begin_attempts();
+    for (;;) {
+      const T h = h_;
       advance(sys, h);
-      return AttemptOutcome<T>{error_norm(h)};
-    });
-    if (!r.ok) k_[12] = k_[0];  // f at the restored x1 = x0
-    return r;
+      const AttemptOutcome<T> outcome{error_norm(h)};
+      if (auto done = this->template judge_attempt<error_exponent>(name, h, outcome)) {
+        if (!done->ok) k_[12] = k_[0];  // f at the restored x1 = x0
+        return *done;
+      }
+    }
   }
 
   void interpolate(const System& sys, T t, state_type& out) const {
@@ -247,9 +251,18 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   template <std::size_t I, std::size_t... J>
   void stage(const System& sys, T h) const {
     using dop853_tableau::a;
-    const std::size_t n = x0_.size();
-    for (std::size_t m = 0; m < n; ++m) tmp_[m] = x0_[m] + h * weighted<J...>(a[I], m);
-    sys(tmp_, k_[I], t0_ + dop853_tableau::c[I] * h);
+    // a fixed-size argument is a local (kept in registers); a run-time-sized one the member
+    auto run = [&](state_type& tmp) {
+      const std::size_t n = x0_.size();
+      for (std::size_t m = 0; m < n; ++m) tmp[m] = x0_[m] + h * weighted<J...>(a[I], m);
+      sys(tmp, k_[I], t0_ + dop853_tableau::c[I] * h);
+    };
+    if constexpr (requires(state_type & v) { v.resize(0); }) {
+      run(tmp_);
+    } else {
+      state_type tmp;
+      run(tmp);
+    }
   }
 
   // The twelve stages of a step of length h, the eighth-order solution x1 and f(t0 + h, x1).

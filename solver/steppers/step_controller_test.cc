@@ -19,7 +19,12 @@
 namespace ivv {
 namespace {
 
-using Control = StepController<double, 5>;
+// dp45's exponent
+struct Control : StepController<double> {
+  StepVerdict judge(double h, double norm, double t0, double& next) {
+    return StepController<double>::judge<5>(h, norm, t0, next);
+  }
+};
 
 TEST(StepController, AcceptsAtNormOneAndGrowsByTheOptimalFactor) {
   Control c;
