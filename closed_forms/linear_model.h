@@ -1,7 +1,7 @@
 // Linearized (piecewise-linear) visco-elastoplastic impact model: closed-form solution.
 //
-// Source: the paper in /work/shared/paper, eqs 15-25 (docs/design.md §1 "linearized", §2 "Linear model,
-// closed form"). A sphere of mass m meets a spring in series with a dashpot c:
+// Source: the paper in /work/shared/paper, eqs 15-25 (docs/design.md §1 "linearized", §2 "Linear
+// model, closed form"). A sphere of mass m meets a spring in series with a dashpot c:
 //
 //   m alpha'' = -F,   c y' = F,   z = alpha - y,   alpha(0) = y(0) = 0, alpha'(0) = z'(0) = v0.
 //
@@ -108,6 +108,9 @@ struct LinearImpact {
 // Throws ivv::InputError for a non-positive or non-finite input (zeta may be 0),
 // LinearizedLawUndefined when z_m < (K_y/K_h)^2.
 LinearImpact solve_linear_model(const LinearModelInput& in);
+// The question as a predicate: does the loading phase reach z_m >= (K_y/K_h)^2, where the
+// unloading law (eq 17) is defined? Throws ivv::InputError as solve_linear_model does.
+bool linearized_law_defined(const LinearModelInput& in);
 
 // The state of the closed-form solution at time t >= 0.
 // After separation F = 0: alpha' and y stay constant and z = alpha - y (free flight).

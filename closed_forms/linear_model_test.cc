@@ -322,6 +322,28 @@ TEST(LinearModel, UndefinedBelowTwoAndAQuarterYieldDepths) {
   EXPECT_THROW(solve_linear_model(paper_input(v_edge * (1 - 1e-9), 0.0)), LinearizedLawUndefined);
 }
 
+// The predicate answers what solve_linear_model would throw for, on both sides of the edge,
+// damped and undamped, and is never an exception itself.
+TEST(LinearModel, DefinedPredicateAgreesWithTheSolver) {
+  const LinearModelInput base = paper_input(1.0, 0.0);
+  const double v_edge =
+      std::sqrt(base.K_y / base.mass) * (base.K_y / base.K_h) * (base.K_y / base.K_h);
+  for (const double zeta : {0.0, 0.1, 0.5}) {
+    for (const double f : {0.5, 1 - 1e-9, 1 + 1e-9, 1.1, 2.0, 100.0}) {
+      const LinearModelInput in = paper_input(v_edge * f * (1 + 2 * zeta), zeta);
+      bool solved = true;
+      try {
+        solve_linear_model(in);
+      } catch (const LinearizedLawUndefined&) {
+        solved = false;
+      }
+      EXPECT_EQ(linearized_law_defined(in), solved) << "zeta " << zeta << " v0/v_edge " << f;
+    }
+  }
+  EXPECT_FALSE(linearized_law_defined(paper_input(0.1, 0.0)));
+  EXPECT_TRUE(linearized_law_defined(paper_input(1.0, 0.1)));
+}
+
 TEST(LinearModel, RejectsBadInput) {
   LinearModelInput in = paper_input(1.0, 0.1);
   in.zeta = -0.1;
