@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "solver/infinite_plate_check.h"
+
 namespace ivv {
 
 namespace {
@@ -63,6 +65,8 @@ std::string impact_summary(const SimulationRun& run) {
   if (!r.reason.empty()) out << ": " << r.reason;
   out << "\n";
   if (r.ok()) outcome_lines(out, req, r, p);
+  for (const std::string& w : infinite_plate_warnings(req.scene, r))
+    out << "  warning      " << w << "\n";
   if (run.choice && req.model == ModelKind::automatic)
     out << "  model        " << run.choice->brief() << "; --model full to integrate always\n";
   return out.str();
