@@ -38,7 +38,9 @@ TEST(InfinitePlateWarnings, DropWeightOnAThinPlateLeavesTheIdealisation) {
   EXPECT_NE(w[0].find("structure.length_x"), std::string::npos) << w[0];
   const bool captured = r.status == ImpactStatus::captured;
   EXPECT_EQ(w.size(), captured ? 2u : 1u);
-  if (captured) EXPECT_NE(w[1].find("captured by an infinite plate"), std::string::npos) << w[1];
+  if (captured) {
+    EXPECT_NE(w[1].find("captured by an infinite plate"), std::string::npos) << w[1];
+  }
 }
 
 TEST(InfinitePlateWarnings, NoneForASmallBallOnAThickPlate) {
