@@ -98,5 +98,26 @@ TEST(IntegratorChoice, ScenesWithoutDashpotOrYieldStrength) {
   }
 }
 
+// `--integrator auto` on a scene without a yield strength computed its stiffness ratio from
+// NaN (zeta, z_y), called it "not stiff", and dop853 ran out of steps where rodas4 succeeds
+// (chung-ooi-2-aluminium, hertz, c = 1 N s/m).
+TEST(IntegratorChoice, WithoutYieldStrengthMeasuresStiffness) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.yield_strength.reset();
+  req.scene.damping = Damping::coefficient(1.0);
+  req.law = LawKind::hertz;
+  const DerivedParameters p = derive(req.scene);
+  const double S = stiffness_ratio(req.scene, p);
+  ASSERT_TRUE(std::isfinite(S));
+  EXPECT_GT(S, 100.0);  // c = 1 N s/m: the dashpot relaxes far faster than loading
+  EXPECT_EQ(auto_integrator(req, p), IntegratorKind::rodas4);
+  req.auto_integrator = true;
+  const ImpactResult r = simulate(req);
+  EXPECT_TRUE(r.ok()) << r.reason;
+  const IntegratorChoice c = choose_integrator(req);
+  for (const std::string& why : c.reasons) EXPECT_EQ(why.find("nan"), std::string::npos) << why;
+}
+
 }  // namespace
 }  // namespace ivv
