@@ -61,7 +61,7 @@ TEST(HuntCrossley, SmallDampingLimit) {
   EXPECT_EQ(hunt_crossley_cor(0.0), 1.0);
 }
 
-// Issue 21 item 2: at u0 = mu v0 ~ 1e-165 the Newton polish divided 0 by an underflowed slope
+// At u0 = mu v0 ~ 1e-165 the Newton polish divided 0 by an underflowed slope
 // and `simulate --law hunt-crossley --hc-mu 1e-200` printed "separated, e = -nan". Down to the
 // smallest subnormal u0 the COR is 1 - (2/3) u0 to round-off, i.e. 1.
 TEST(HuntCrossley, TinyDampingIsFiniteNotNaN) {

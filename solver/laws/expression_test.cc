@@ -195,7 +195,8 @@ TEST(ExpressionLaw, NonFiniteForceInContactIsAFailureNamingTheExpression) {
   r.expression.force = "K_h*z^1.5 + log(2e-5 - z)";  // NaN once z > 2e-5 m
   const ImpactResult res = simulate(r);
   EXPECT_EQ(res.status, ImpactStatus::failed);
-  // reached inside contact: a computation that failed (exit 1), not bad input (issue 21.14)
+  // reached inside contact: a computation that failed (exit 1), not bad input (it was
+  // reported as `--law: ...` with exit 2)
   EXPECT_EQ(res.failure, FailureKind::law_non_finite);
   EXPECT_NE(res.reason.find("--force evaluated to"), std::string::npos) << res.reason;
 }
