@@ -1,4 +1,5 @@
-// validate_benchmark_arguments (benchmarks.h): issue 21 item 12's flags are bad input, named.
+// validate_benchmark_arguments (benchmarks.h): --benchmark_* values Google Benchmark would
+// misuse (nan, -5 repetitions, /dev/full) are bad input, named.
 #include "bench/benchmarks.h"
 
 #include <gtest/gtest.h>
