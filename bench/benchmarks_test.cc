@@ -24,7 +24,7 @@ std::string rejected(const std::string& arg) {
   return "";
 }
 
-TEST(BenchArguments, IssueFlagsAreBadInputNamingTheFlag) {
+TEST(BenchArguments, MisusedValuesAreBadInputNamingTheFlag) {
   EXPECT_EQ(rejected("--benchmark_min_time=nan"), "--benchmark_min_time");
   EXPECT_EQ(rejected("--benchmark_min_time=-1s"), "--benchmark_min_time");
   EXPECT_EQ(rejected("--benchmark_repetitions=-5"), "--benchmark_repetitions");
