@@ -106,7 +106,7 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
   return t;
 }
 
-// Issue 19's speed figures: a two-parameter calibration (c, S_y of the damped paper scene)
+// The validation layer's speed: a two-parameter calibration (c, S_y of the damped paper scene)
 // to 50 synthetic impacts on one thread, and a 1e4-draw prediction band over 100 speeds on two.
 void calibration_targets(const BenchOptions& options, BenchReport& rep,
                          const std::function<void(const std::string&)>& say) {
@@ -155,7 +155,7 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
                  std::to_string(po.samples * 100) + " impacts)"));
 }
 
-// ---- issue 20's targets -------------------------------------------------------------------
+// ---- against the peers, the 300 x 300 map, the auto integrator ------------------------------
 
 // ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),
 // as ivv time / peer time: the target "ivv >= N x faster" is a bound 1/N on it.
@@ -211,7 +211,7 @@ double time_map_with_csv(const SweepRequest& sweep, int threads, int* failed) {
   return runs[1];
 }
 
-// Issue 20's map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
+// The large map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
 // --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
 // scaled to 90000 points.
 void add_map_targets(BenchReport& rep, bool quick) {
@@ -243,9 +243,10 @@ void add_map_targets(BenchReport& rep, bool quick) {
 }
 
 // --integrator auto against the fastest fixed integrator at every point of a grid that holds
-// the heavily damped scenes of issue 20 (zeta 8 and 16), elastoplastic, --model full (the
-// choice is of an integrator), rtol = atol = 1e-8. The fixed candidates: every production
-// integrator with error control (rk4 has none). A fixed run that fails is no candidate.
+// heavily damped scenes (zeta 8 and 16, where a stiffness ratio once chose the slower rodas4),
+// elastoplastic, --model full (the choice is of an integrator), rtol = atol = 1e-8. The fixed
+// candidates: every production integrator with error control (rk4 has none). A fixed run that fails
+// is no candidate.
 void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timing) {
   const std::vector<double> v0s =
       quick ? std::vector<double>{1.0, 5.0} : std::vector<double>{0.3, 1.0, 5.0};
@@ -408,7 +409,7 @@ BenchReport run_bench(const BenchOptions& options,
                                "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
                                    "), elastoplastic, against dop853 at 1e-13"));
   {
-    // The COR map of issue 8 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
+    // The 200 x 50 COR map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
     // run_sweep, the sweep's own parallel loop: --model auto with --integrator auto on one and
     // on two threads, and the full model (dop853) on one thread for the "auto is never slower"
     // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts. Each timing is the

@@ -144,10 +144,10 @@ class SweepSink {
   // --resume and returns false.
   bool finish(const std::function<void(const SweepCounts&)>& before_commit);
   // finish(), committing the CSV and the sidecar (options.sidecar, filled by `write_sidecar`)
-  // as a pair (issue 21 item 9): both are written to temporaries first, then the old sidecar is
-  // removed, the CSV renamed into place and the sidecar last, so a reader (or a SIGKILL at any
-  // moment) never pairs a sidecar with a CSV it does not describe: at worst a CSV has no
-  // sidecar yet.
+  // as a pair (a SIGKILL between them once left a sidecar beside a CSV it did not describe): both
+  // are written to temporaries first, then the old sidecar is removed, the CSV renamed into place
+  // and the sidecar last, so a reader (or a SIGKILL at any moment) never pairs a sidecar with a CSV
+  // it does not describe: at worst a CSV has no sidecar yet.
   bool finish_with_sidecar(
       const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar);
   const SweepCounts& counts() const { return counts_; }
