@@ -176,6 +176,19 @@ def test_sweep_with_the_scenes_own_dashpot_equals_the_cli(tmp_path):
     assert_columns_equal_csv(columns, read_sweep_csv(out))
 
 
+def test_failed_sweep_points_are_nan_with_their_reason_as_in_the_csv(tmp_path):
+    out = tmp_path / "grid.csv"
+    run = cli("sweep", "--scene", "paper", "--v0", "0.5,1", "--zeta", "0,0.1", "--model", "full",
+              "--integrator", "dp45", "--max-steps", "5", "--out", str(out), "-q")
+    assert run.returncode == 1, run.stderr  # every point failed
+    columns = ivv.sweep("paper", v0=[0.5, 1], zeta=[0, 0.1], model="full", integrator="dp45",
+                        max_steps=5)
+    rows = read_sweep_csv(out)
+    assert_columns_equal_csv(columns, rows)
+    assert set(columns["status"]) == {"failed"} and np.isnan(columns["e"]).all()
+    assert all(columns["reason"])
+
+
 def test_sweep_threads_give_the_same_numbers():
     s = ivv.scene("paper")
     v0 = np.geomspace(0.1, 10, 12)
