@@ -397,6 +397,7 @@ void translate_input_error(py::module_& m) {
 PYBIND11_MODULE(_ivv, m) {
   using namespace ivv::python;
   m.doc() = "The compiled half of the Python module ivv (use `import ivv`, not this module).";
+  m.attr("__version__") = IVV_VERSION;
   translate_input_error(m);
   py::class_<PyScene>(m, "_Scene")
       .def_readonly("source", &PyScene::source)

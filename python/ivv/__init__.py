@@ -27,6 +27,8 @@ import numpy as _np
 from . import _ivv
 from ._ivv import InputError
 
+__version__ = _ivv.__version__
+
 __all__ = ["InputError", "Scene", "SimulationResult", "LawVerdict", "scene", "simulate",
            "sweep", "check_law", "data_directories"]
 
@@ -85,7 +87,9 @@ class Scene(_Fields):
         return dict(self._dict)
 
     def __repr__(self):
-        return f"ivv.scene({self._scene.source!r}) v0={self._dict.get('v0')} zeta={self._dict.get('zeta')}"
+        d = self._dict
+        return (f"<ivv.Scene {d.get('name')!r} from {self._scene.source!r}: v0={d.get('v0')} m/s, "
+                f"zeta={d.get('zeta')}, c={d.get('c')} N s/m>")
 
 
 def scene(name_or_path="paper", **overrides):

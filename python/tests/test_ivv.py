@@ -59,6 +59,31 @@ def test_scene_has_the_derived_parameters_of_the_cli():
     assert s.zeta == 0.1
 
 
+def test_scene_repr():
+    text = repr(ivv.scene("paper", v0=2, zeta=0.1))
+    assert text.startswith("<ivv.Scene 'paper' from 'paper': v0=2.0 m/s, zeta=0.1")
+
+
+def test_version_is_the_programs(tmp_path):
+    out = tmp_path / "grid.csv"
+    run = cli("sweep", "--scene", "paper", "--v0", "1", "--zeta", "0", "--out", str(out), "-q")
+    assert run.returncode == 0, run.stderr
+    with open(tmp_path / "grid.json") as f:
+        sidecar = json.load(f)
+    versions = [v for k, v in _items(sidecar) if k == "version"]
+    assert versions and all(v == ivv.__version__ for v in versions)
+
+
+def _items(tree):
+    if isinstance(tree, dict):
+        for k, v in tree.items():
+            yield k, v
+            yield from _items(v)
+    elif isinstance(tree, list):
+        for v in tree:
+            yield from _items(v)
+
+
 def test_scene_by_path_and_shipped_name():
     here = os.path.dirname(os.path.abspath(__file__))
     path = os.path.join(here, "..", "..", "reference_data", "scenes", "paper-damped.toml")
