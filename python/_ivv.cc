@@ -22,6 +22,11 @@
 #include "scene/input_error.h"
 #include "solver/request_options.h"
 #include "solver/sweep.h"
+#include "validation/calibration.h"
+#include "validation/calibration_file.h"
+#include "validation/measured_data.h"
+#include "validation/parameters.h"
+#include "validation/prediction.h"
 #include "verification/conformance.h"
 
 namespace py = pybind11;
@@ -376,6 +381,128 @@ py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& check
   return to_python(j);
 }
 
+// ---- calibrate and predict -----------------------------------------------------------------
+
+// Measured data: a file (`path`), or the same CSV as text (ivv.calibrate's columns, written
+// by the Python side with every digit of its floats).
+validation::MeasuredData measured_data(const py::dict& kw) {
+  if (auto text = get<std::string>(kw, "data_text"))
+    return validation::parse_measured_data(*text, "<data>");
+  return validation::read_measured_data(kw["data"].cast<std::string>());
+}
+
+void check_threads(int threads) {
+  if (threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+}
+
+// `ivv calibrate`: the fit of `fit` (with start values and bounds) to the measured data. The
+// problem is built as app/calibrate_command.cc builds it (start values through set_parameter).
+py::dict calibrate(const PyScene& s, const py::dict& kw, const py::dict& fit_kw) {
+  validation::CalibrationProblem problem{to_request(s.scene, request_options(s, kw, "calibrate()")),
+                                         measured_data(fit_kw)};
+  for (const auto& [name, value] : get<std::map<std::string, double>>(fit_kw, "start")
+                                       .value_or(std::map<std::string, double>{})) {
+    validation::parameter_info(problem.request, name);  // throws naming the fittable ones
+    validation::set_parameter(problem.request, name, value);
+  }
+  validation::CalibrationOptions options;
+  options.fit = fit_kw["fit"].cast<std::vector<std::string>>();
+  using Range = std::pair<double, double>;
+  for (const auto& [name, range] :
+       get<std::map<std::string, Range>>(fit_kw, "bounds").value_or(std::map<std::string, Range>{}))
+    options.bounds[name] = {range.first, range.second};
+  options.scan = get<bool>(fit_kw, "scan").value_or(false);
+  options.profile = get<bool>(fit_kw, "profile").value_or(true);
+  options.threads = get<int>(fit_kw, "threads").value_or(0);
+  check_threads(options.threads);
+  options.validate(problem.request);
+  validation::CalibrationResult fit;
+  {
+    py::gil_scoped_release release;
+    fit = validation::calibrate(problem, options);
+  }
+  py::dict out;
+  out["ok"] = fit.ok;
+  out["failure"] = fit.failure;
+  out["brief"] = fit.brief();
+  out["json"] = py::none();
+  if (fit.ok) out["json"] = validation::calibration_json(problem, fit).dump();
+  return out;
+}
+
+// The band of `ivv predict --json` (and its V&V 20 comparison), as app/calibrate_command.cc
+// writes it: the prediction library returns structs, the program lists their fields.
+nlohmann::json prediction_json(const validation::Prediction& band,
+                               const std::optional<validation::ValidationComparison>& vv) {
+  nlohmann::json j = {{"samples", band.samples},
+                      {"seed", band.seed},
+                      {"redrawn", band.redrawn},
+                      {"held_at_start", band.held},
+                      {"band", nlohmann::json::array()}};
+  for (const auto& b : band.points)
+    j["band"].push_back({{"v0", b.v0},
+                         {"e", b.e_nominal},
+                         {"e_lo95", b.e_lo},
+                         {"e_hi95", b.e_hi},
+                         {"u_input", b.u_input},
+                         {"u_num", b.u_num}});
+  if (!vv) return j;
+  j["vv20"] = nlohmann::json::array();
+  for (const auto& p : vv->points)
+    j["vv20"].push_back({{"v0", p.v0},
+                         {"S", p.S},
+                         {"D", p.D},
+                         {"E", p.E},
+                         {"u_num", p.u_num},
+                         {"u_input", p.u_input},
+                         {"u_D", p.u_D},
+                         {"u_val", p.u_val},
+                         {"exceeds_2u_val", p.exceeds},
+                         {"line", p.line}});
+  j["exceeding"] = vv->exceeding;
+  return j;
+}
+
+// `ivv predict`: the calibration (its JSON text, or a file) over speeds, or against held-back
+// data (ASME V&V 20).
+py::dict predict(const py::dict& kw) {
+  const validation::CalibratedModel model =
+      kw.contains("calibration_text")
+          ? validation::read_calibration(
+                nlohmann::json::parse(kw["calibration_text"].cast<std::string>()), "<calibration>")
+          : validation::read_calibration_file(kw["calibration"].cast<std::string>());
+  validation::PredictionOptions o;
+  o.samples = get<int>(kw, "samples").value_or(10000);
+  o.seed = get<std::uint64_t>(kw, "seed").value_or(1);
+  o.threads = get<int>(kw, "threads").value_or(0);
+  check_threads(o.threads);
+  o.validate();
+  const auto v0 = get<std::vector<double>>(kw, "v0");
+  const bool with_data = kw.contains("data") || kw.contains("data_text");
+  if (v0.has_value() == with_data)
+    throw InputError("--v0",
+                     "give the speeds of the band (--v0 LO:HI:N) or held-back data "
+                     "(--data FILE), one of them");
+  std::optional<validation::MeasuredData> data;
+  if (with_data) data = measured_data(kw);
+  std::optional<validation::ValidationComparison> vv;
+  validation::Prediction band;
+  {
+    py::gil_scoped_release release;
+    if (data) {
+      vv = validation::compare_with_data(model, *data, o);
+      band = vv->prediction;
+    } else {
+      band = validation::predict(model, *v0, o);
+    }
+  }
+  py::dict out;
+  out["ok"] = band.ok();
+  out["failure"] = band.ok() ? std::string() : band.failures.front();
+  out["json"] = to_python(prediction_json(band, vv));
+  return out;
+}
+
 // ---- the module ----------------------------------------------------------------------------
 
 void translate_input_error(py::module_& m) {
@@ -408,6 +535,8 @@ PYBIND11_MODULE(_ivv, m) {
   m.def("_sweep", &sweep, py::arg("scene"), py::arg("v0"), py::arg("zeta"), py::arg("threads"),
         py::arg("options"));
   m.def("_check_law", &check_law, py::arg("scene"), py::arg("options"), py::arg("checks"));
+  m.def("_calibrate", &calibrate, py::arg("scene"), py::arg("options"), py::arg("fit"));
+  m.def("_predict", &predict, py::arg("options"));
   m.def(
       "_add_data_directory", [](const std::string& dir) { ivv::add_data_directory(dir); },
       py::arg("directory"));

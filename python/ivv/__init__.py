@@ -13,6 +13,8 @@ scene()      a shipped scene or a TOML file, with overrides; derived parameters 
 simulate()   one impact: the fields of `ivv simulate --json` (and the trajectory as numpy arrays)
 sweep()      a v0 x zeta grid in parallel: numpy columns, those of `ivv sweep`'s CSV
 check_law()  a contact law through the conformance checks: `ivv check-law --json`
+calibrate()  a law's parameters fitted to measured restitution: `ivv calibrate --json`
+predict()    e with its 95 % band, or the V&V 20 comparison: `ivv predict --json`
 
 Bad input raises InputError (a ValueError) with the command line's message; a computation that
 fails is a result whose status and reason say why, not an exception. Numbers the CLI's JSON
@@ -29,8 +31,8 @@ from ._ivv import InputError
 
 __version__ = _ivv.__version__
 
-__all__ = ["InputError", "Scene", "SimulationResult", "LawVerdict", "scene", "simulate",
-           "sweep", "check_law", "data_directories"]
+__all__ = ["InputError", "Scene", "SimulationResult", "LawVerdict", "Calibration", "Prediction",
+           "scene", "simulate", "sweep", "check_law", "calibrate", "predict", "data_directories"]
 
 
 def _register_data_directories():
@@ -287,3 +289,136 @@ def check_law(force=None, unload=None, params=None, *, law=None, scene="paper",
         if grid is not None:
             checks[key] = [float(x) for x in _np.atleast_1d(_np.asarray(grid, dtype=float))]
     return LawVerdict(_ivv._check_law(s._scene, opts, checks))
+
+
+def _data_options(data):
+    """A path to a measured-data CSV, or columns {v0, e, u_e, F_max, ...} written as that CSV
+    (every float with repr's digits, which read back exactly)."""
+    if isinstance(data, (str, _os.PathLike)):
+        return {"data": _os.fspath(data)}
+    if not isinstance(data, dict):
+        raise TypeError("data: a path to a CSV, or a dict of columns (v0, e, u_e, ...)")
+    names = list(data)
+    columns = [_np.atleast_1d(_np.asarray(data[n], dtype=float)) for n in names]
+    lines = [",".join(names)]
+    for row in zip(*columns):
+        lines.append(",".join("" if _np.isnan(x) else repr(float(x)) for x in row))
+    return {"data_text": "\n".join(lines) + "\n"}
+
+
+class Calibration(_Fields):
+    """A calibration: the content of `ivv calibrate --json` (the file `ivv predict` reads).
+
+    Attributes are its keys: fit (per fitted parameter: name, unit, value, standard_error,
+    lower95, upper95, profile95, identifiable, ...), chi2, dof, p_value, covariance,
+    correlation, residuals, law, parameters (the law's), scene, ...
+    ok is False when the fit failed (failure says why; then there are no fields). brief is the
+    summary the CLI prints. save(path) writes the JSON that `ivv predict --calibration` reads.
+    """
+
+    def __init__(self, out):
+        self.ok = out["ok"]
+        self.failure = out["failure"]
+        self.brief = out["brief"]
+        self._text = out["json"]
+        self._dict = None if self._text is None else __import__("json").loads(self._text)
+
+    def _lookup(self):
+        return (self._dict,)
+
+    def to_dict(self):
+        """The object `ivv calibrate --json` prints (None when the fit failed)."""
+        return self._dict
+
+    def save(self, path):
+        """Writes the calibration JSON (as `ivv calibrate --out FILE`)."""
+        if self._text is None:
+            raise ValueError(f"the calibration failed: {self.failure}")
+        with open(path, "w") as f:
+            f.write(__import__("json").dumps(self._dict, indent=2) + "\n")
+
+    def __repr__(self):
+        if not self.ok:
+            return f"<ivv.Calibration failed: {self.failure}>"
+        fitted = ", ".join(f"{p['name']}={p['value']:.6g}" for p in self._dict["fit"])
+        return f"<ivv.Calibration {self._dict.get('law')}: {fitted}>"
+
+
+def calibrate(scene, data, fit, law="elastoplastic", *, start=None, bounds=None, scan=False,
+              profile=True, threads=0, integrator="auto", model="auto", params=None,
+              force=None, unload=None, allow_tension=False):
+    """A law's parameters fitted to measured restitution (`ivv calibrate --json`).
+
+    scene    an ivv.Scene or a name/path (e.g. "paper-damped"); its values are the starts
+    data     a measured-data CSV (v0, e, optional u_e, F_max, t_contact and their u_), or a
+             dict of those columns as arrays
+    fit      the parameters to fit, e.g. ["c", "yield_strength"] (a comma string also works)
+    start    {name: value} start values; bounds {name: (lo, hi)}; scan: coarse scan for the
+             start; profile: profile-likelihood intervals (default True)
+    law, force, unload, params  the law, as simulate() takes it
+
+    Returns a Calibration (.fit, .chi2, .p_value, .covariance, ..., .save(path)); a fit
+    that fails is a Calibration with ok False and its failure. Bad input raises InputError.
+    """
+    s = _as_scene(scene)
+    if isinstance(fit, str):
+        fit = [name for name in fit.split(",") if name]
+    opts = _model_options(None if force is not None else law, integrator, model, None, None,
+                          None, None, params, force, unload, allow_tension, None, None)
+    fit_options = dict(fit=list(fit), start=start, scan=scan, profile=profile,
+                       threads=int(threads), **_data_options(data))
+    if bounds is not None:
+        fit_options["bounds"] = {k: (float(lo), float(hi)) for k, (lo, hi) in bounds.items()}
+    return Calibration(_ivv._calibrate(s._scene, opts, fit_options))
+
+
+class Prediction(_Fields):
+    """A prediction: the content of `ivv predict --json`.
+
+    band is the list of points (v0, e, e_lo95, e_hi95, u_input, u_num); columns() gives them
+    as numpy arrays. Against held-back data, vv20 holds the ASME V&V 20 comparison per point
+    (S, D, E, u_val, exceeds_2u_val, ...) and exceeding the count beyond 2 u_val. ok is False
+    when a draw failed (failure says which).
+    """
+
+    def __init__(self, out):
+        self.ok = out["ok"]
+        self.failure = out["failure"]
+        self._dict = out["json"]
+
+    def _lookup(self):
+        return (self._dict,)
+
+    def columns(self, part="band"):
+        """The points of `band` (or "vv20") as a dict of numpy arrays."""
+        points = self._dict.get(part) or []
+        return {k: _np.array([p[k] for p in points]) for k in (points[0] if points else {})}
+
+    def to_dict(self):
+        """The object `ivv predict --json` prints."""
+        return self._dict
+
+
+def predict(calibration, v0=None, data=None, *, samples=10000, seed=1, threads=0):
+    """e with its 95 % band from a calibration, or its ASME V&V 20 comparison with held-back
+    data (`ivv predict --json`).
+
+    calibration  a Calibration (ivv.calibrate) or the path of its JSON file
+    v0           speeds [m/s] of the band, array_like; or
+    data         held-back measurements (a CSV path or a dict of columns, as for calibrate)
+    samples      Monte Carlo draws over the fitted covariance (default 10000); seed (default 1)
+
+    Returns a Prediction (.band, .columns(), .vv20, .exceeding).
+    """
+    if isinstance(calibration, Calibration):
+        if calibration._text is None:
+            raise ValueError(f"the calibration failed: {calibration.failure}")
+        options = {"calibration_text": calibration._text}
+    else:
+        options = {"calibration": _os.fspath(calibration)}
+    options.update(samples=int(samples), seed=int(seed), threads=int(threads))
+    if v0 is not None:
+        options["v0"] = [float(x) for x in _np.atleast_1d(_np.asarray(v0, dtype=float))]
+    if data is not None:
+        options.update(_data_options(data))
+    return Prediction(_ivv._predict(options))

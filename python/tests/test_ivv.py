@@ -305,3 +305,57 @@ def test_check_law_needs_a_law():
 @pytest.mark.parametrize("fn", [ivv.scene, ivv.simulate, ivv.sweep, ivv.check_law])
 def test_every_function_says_what_it_does(fn):
     assert fn.__doc__ and len(fn.__doc__.splitlines()) > 5
+
+
+# ---- calibrate and predict -----------------------------------------------------------------
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(HERE, "..", "..", "reference_data", "calibration_example.csv")
+FIT_FLAGS = ["--scene", "paper-damped", "--data", DATA, "--fit", "c,yield_strength", "--start",
+             "c=8000", "--start", "yield_strength=3e8", "--no-profile"]
+
+
+def fitted():
+    return ivv.calibrate("paper-damped", DATA, fit=["c", "yield_strength"],
+                         start={"c": 8000, "yield_strength": 3e8}, profile=False)
+
+
+def test_calibrate_equals_the_cli_json():
+    cal = fitted()
+    assert cal.ok and not cal.failure
+    assert as_printed(cal.to_dict()) == cli_json("calibrate", *FIT_FLAGS)
+    assert [p["name"] for p in cal.fit] == ["c", "yield_strength"]
+
+
+def test_calibrate_from_columns_equals_from_the_file():
+    with open(DATA) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    columns = {name: [float(r[name]) for r in rows] for name in rows[0]}
+    cal = ivv.calibrate("paper-damped", columns, fit="c,yield_strength",
+                        start={"c": 8000, "yield_strength": 3e8}, profile=False)
+    by_file = fitted().to_dict()
+    assert cal.to_dict()["fit"] == by_file["fit"] and cal.chi2 == by_file["chi2"]
+
+
+def test_predict_equals_the_cli_json(tmp_path):
+    cal = fitted()
+    path = tmp_path / "cal.json"
+    cal.save(path)
+    expected = cli_json("predict", "--calibration", str(path), "--v0", "0.3,1,5", "--samples",
+                        "500")
+    from_object = ivv.predict(cal, v0=[0.3, 1, 5], samples=500)
+    from_file = ivv.predict(path, v0=[0.3, 1, 5], samples=500)
+    assert from_object.ok
+    assert as_printed(from_object.to_dict()) == expected == as_printed(from_file.to_dict())
+    np.testing.assert_array_equal(from_object.columns()["v0"], [0.3, 1, 5])
+    holdout = DATA.replace(".csv", "_holdout.csv")
+    vv = ivv.predict(cal, data=holdout, samples=500)
+    assert as_printed(vv.to_dict()) == cli_json("predict", "--calibration", str(path), "--data",
+                                                 holdout, "--samples", "500")
+
+
+def test_calibrate_errors_carry_the_cli_message():
+    with pytest.raises(ivv.InputError) as caught:
+        ivv.calibrate("paper-damped", DATA, fit=["nope"])
+    assert str(caught.value) == cli_error("calibrate", "--scene", "paper-damped", "--data", DATA,
+                                          "--fit", "nope")
