@@ -107,6 +107,7 @@ double* scene_value(Scene& s, const std::string& name) {
   return nullptr;
 }
 
+// The keywords of ivv.scene(): the CLI's overrides, then the scene's values.
 const std::vector<std::string> kSceneOverrides = {"v0",
                                                   "zeta",
                                                   "c",
@@ -120,7 +121,41 @@ const std::vector<std::string> kSceneOverrides = {"v0",
                                                   "target_poisson_ratio",
                                                   "yield_strength",
                                                   "target_radius",
-                                                  "target_mass"};
+                                                  "target_mass",
+                                                  "structure_density",
+                                                  "structure_thickness",
+                                                  "structure_area",
+                                                  "structure_bending_stiffness",
+                                                  "structure_youngs_modulus",
+                                                  "structure_poisson_ratio"};
+
+// structure_<name>: the values of a [structure] section (scene/structure.h), for a scene whose
+// dashpot comes from its structure.
+void override_structure(Scene& scene, const py::dict& kw) {
+  const std::pair<const char*, double Structure::*> required[] = {
+      {"structure_density", &Structure::density},
+      {"structure_thickness", &Structure::thickness},
+      {"structure_area", &Structure::area}};
+  const std::pair<const char*, std::optional<double> Structure::*> optional[] = {
+      {"structure_bending_stiffness", &Structure::bending_stiffness},
+      {"structure_youngs_modulus", &Structure::youngs_modulus},
+      {"structure_poisson_ratio", &Structure::poisson_ratio}};
+  auto check = [&](const char* name) {
+    if (scene.damping.kind != Damping::Kind::structure)
+      throw InputError(name, "the scene has no [structure] section whose value it could replace");
+  };
+  Structure& st = scene.damping.structure;
+  for (const auto& [name, member] : required) {
+    if (!kw.contains(name)) continue;
+    check(name);
+    st.*member = kw[name].cast<double>();
+  }
+  for (const auto& [name, member] : optional) {
+    if (!kw.contains(name)) continue;
+    check(name);
+    st.*member = get<double>(kw, name);  // None: back to the value derived from the target
+  }
+}
 
 PyScene load(const std::string& source, const py::dict& kw) {
   reject_unknown(kw, kSceneOverrides, "scene()");
@@ -131,6 +166,7 @@ PyScene load(const std::string& source, const py::dict& kw) {
   if (kw.contains("yield_strength")) s.scene.yield_strength = get<double>(kw, "yield_strength");
   if (kw.contains("target_radius")) s.scene.target_radius = get<double>(kw, "target_radius");
   if (kw.contains("target_mass")) s.scene.target_mass = get<double>(kw, "target_mass");
+  override_structure(s.scene, kw);
   RequestOptions& o = s.overrides;
   o.scene = source;
   o.v0 = get<double>(kw, "v0");

@@ -105,7 +105,9 @@ def scene(name_or_path="paper", **overrides):
       no_dashpot    True: drop the scene's dashpot                (--no-dashpot)
     and scene values: mass, radius, impactor_youngs_modulus, impactor_poisson_ratio,
     target_youngs_modulus, target_poisson_ratio, yield_strength, target_radius, target_mass
-    (None removes an optional one).
+    (None removes an optional one); for a scene whose dashpot comes from its [structure]:
+    structure_thickness, structure_density, structure_area, structure_bending_stiffness,
+    structure_youngs_modulus, structure_poisson_ratio.
 
     Returns a Scene whose attributes are the derived parameters (E_star, K_h, z_y, K_y, zeta,
     c, v_yield, ...). Raises InputError naming the field and the accepted range.

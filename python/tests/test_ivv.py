@@ -59,6 +59,23 @@ def test_scene_has_the_derived_parameters_of_the_cli():
     assert s.zeta == 0.1
 
 
+def test_structure_overrides(tmp_path):
+    thin = ivv.scene("steel-ball-on-steel-plate")
+    thick = ivv.scene("steel-ball-on-steel-plate", structure_thickness=0.004)
+    assert thick.structure["c"] > thin.structure["c"] and thick.c == thick.structure["c"]
+    # the same scene written as a file with that thickness gives the same dashpot
+    here = os.path.dirname(os.path.abspath(__file__))
+    with open(os.path.join(here, "..", "..", "reference_data", "scenes",
+                           "steel-ball-on-steel-plate.toml")) as f:
+        text = f.read()
+    assert "thickness = 0.002" in text
+    path = tmp_path / "thick.toml"
+    path.write_text(text.replace("thickness = 0.002", "thickness = 0.004"))
+    assert ivv.scene(str(path)).c == thick.c
+    with pytest.raises(ivv.InputError, match="^structure_thickness: the scene has no"):
+        ivv.scene("paper", structure_thickness=0.004)
+
+
 def test_scene_repr():
     text = repr(ivv.scene("paper", v0=2, zeta=0.1))
     assert text.startswith("<ivv.Scene 'paper' from 'paper': v0=2.0 m/s, zeta=0.1")
