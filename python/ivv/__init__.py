@@ -129,6 +129,11 @@ def _as_scene(s):
 
 def _model_options(law, integrator, model, rtol, atol, dt, max_steps, params, force, unload,
                    allow_tension, hc_k, hc_mu):
+    """The law (default "elastoplastic"; or the expression law of force/unload), integrator and
+    tolerances as keywords of the compiled module; law and force together are refused, as the
+    command line refuses --law with --force."""
+    if law is not None and force is not None:
+        raise TypeError("give law (a built-in law) or force (an expression law), not both")
     opts = dict(integrator=integrator, model=model, rtol=rtol, atol=atol, dt=dt,
                 max_steps=max_steps, params=params, force=force, unload=unload,
                 allow_tension=allow_tension, hc_k=hc_k, hc_mu=hc_mu)
@@ -173,13 +178,13 @@ class SimulationResult(_Fields):
         return f"<ivv.SimulationResult {r['status']}: e={r.get('e')} F_max={r.get('F_max')}>"
 
 
-def simulate(scene, law="elastoplastic", integrator="auto", model="auto", rtol=None,
+def simulate(scene, law=None, integrator="auto", model="auto", rtol=None,
              trajectory=False, *, atol=None, dt=None, max_steps=None, params=None, force=None,
              unload=None, allow_tension=False, hc_k=None, hc_mu=None):
     """One impact, as `ivv simulate --json` computes it.
 
     scene       an ivv.Scene, or a name/path (then ivv.scene(name))
-    law         "hertz", "elastoplastic", "linearized", "hunt-crossley" (`ivv laws`)
+    law         "hertz", "elastoplastic" (the default), "linearized", "hunt-crossley"
     integrator  "auto" (dop853 or rodas4 by stiffness) or a name of `ivv integrators`
     model       "auto": exact closed forms where they exist; "full": always integrate
     rtol, atol  tolerances (default 1e-10, 1e-12); dt: rk4's normalised step
@@ -192,7 +197,7 @@ def simulate(scene, law="elastoplastic", integrator="auto", model="auto", rtol=N
     InputError with the CLI's message.
     """
     s = _as_scene(scene)
-    opts = _model_options(None if force is not None else law, integrator, model, rtol, atol,
+    opts = _model_options(law, integrator, model, rtol, atol,
                           dt, max_steps, params, force, unload, allow_tension, hc_k, hc_mu)
     json_dict, traj = _ivv._simulate(s._scene, opts, bool(trajectory))
     return SimulationResult(json_dict, traj)
@@ -201,7 +206,7 @@ def simulate(scene, law="elastoplastic", integrator="auto", model="auto", rtol=N
 _TEXT_COLUMNS = ("route", "integrator", "status", "reason")
 
 
-def sweep(scene, v0, zeta=None, threads=0, law="elastoplastic", integrator="auto",
+def sweep(scene, v0, zeta=None, threads=0, law=None, integrator="auto",
           model="auto", rtol=None, *, atol=None, dt=None, max_steps=None, params=None,
           force=None, unload=None, allow_tension=False, hc_k=None, hc_mu=None):
     """COR and peak force over a v0 x zeta grid, computed in parallel (`ivv sweep`).
@@ -222,7 +227,7 @@ def sweep(scene, v0, zeta=None, threads=0, law="elastoplastic", integrator="auto
     s = _as_scene(scene)
     v = _np.atleast_1d(_np.asarray(v0, dtype=float)).ravel()
     z = None if zeta is None else _np.atleast_1d(_np.asarray(zeta, dtype=float)).ravel()
-    opts = _model_options(None if force is not None else law, integrator, model, rtol, atol,
+    opts = _model_options(law, integrator, model, rtol, atol,
                           dt, max_steps, params, force, unload, allow_tension, hc_k, hc_mu)
     columns = _ivv._sweep(s._scene, v, z, int(threads), opts)
     for name in _TEXT_COLUMNS:
@@ -346,7 +351,7 @@ class Calibration(_Fields):
         return f"<ivv.Calibration {self._dict.get('law')}: {fitted}>"
 
 
-def calibrate(scene, data, fit, law="elastoplastic", *, start=None, bounds=None, scan=False,
+def calibrate(scene, data, fit, law=None, *, start=None, bounds=None, scan=False,
               profile=True, threads=0, integrator="auto", model="auto", params=None,
               force=None, unload=None, allow_tension=False):
     """A law's parameters fitted to measured restitution (`ivv calibrate --json`).
@@ -365,7 +370,7 @@ def calibrate(scene, data, fit, law="elastoplastic", *, start=None, bounds=None,
     s = _as_scene(scene)
     if isinstance(fit, str):
         fit = [name for name in fit.split(",") if name]
-    opts = _model_options(None if force is not None else law, integrator, model, None, None,
+    opts = _model_options(law, integrator, model, None, None,
                           None, None, params, force, unload, allow_tension, None, None)
     fit_options = dict(fit=list(fit), start=start, scan=scan, profile=profile,
                        threads=int(threads), **_data_options(data))

@@ -150,6 +150,11 @@ def test_simulate_fields_and_model_choice():
     assert r.trajectory is None
 
 
+def test_law_and_force_together_are_refused():
+    with pytest.raises(TypeError, match="not both"):
+        ivv.simulate("paper", law="hertz", force="K_h*z^1.5")
+
+
 def test_a_failed_computation_is_a_result_not_an_exception():
     r = ivv.simulate("paper", model="full", integrator="dp45", max_steps=5)
     assert not r.ok
