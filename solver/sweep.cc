@@ -280,6 +280,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   ParallelOptions opt;
   opt.threads = req.threads;
   opt.progress = req.progress;
+  opt.stop = req.stop;
   try {
     parallel_for(points.size(), opt, [&](std::size_t i) {
       points[i].v0 = req.velocities[i / nz];

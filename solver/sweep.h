@@ -42,6 +42,10 @@ struct SweepRequest {
   int threads = 0;  // 0: all hardware threads
   // run_sweep only: called from worker threads (serialised) after each point: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
+  // run_sweep only: once true, no new point is started and run_sweep returns after the points
+  // in flight; the points never started keep a default ImpactResult (the caller asked to stop
+  // and knows it: the Python module's Ctrl-C).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The largest grid accepted: 1e8 points (a CSV of ~25 GB). Checked before anything is
