@@ -845,7 +845,7 @@ CalibrationResult calibrate(const CalibrationProblem& given, const CalibrationOp
 std::string CalibrationResult::brief() const {
   std::ostringstream os;
   os.precision(6);
-  if (!ok) return "calibration failed: " + failure;
+  if (!ok) return "calibration failed: " + failure + "\n";
   os << "law " << law << ": chi^2 = " << chi2 << " on " << dof << " dof";
   if (p_value)
     os << " (p = " << *p_value << ")";
@@ -854,7 +854,6 @@ std::string CalibrationResult::brief() const {
   else
     os << " (no degrees of freedom left: no chi^2 test)";
   os << '\n';
-  for (const auto& n : notes) os << "  note: " << n << '\n';
   for (const auto& p : parameters) {
     os << "  " << p.name << " [" << p.unit << "] = ";
     if (!p.identifiable) {
@@ -880,6 +879,7 @@ std::string CalibrationResult::brief() const {
     os << '\n';
   }
   for (const auto& u : unidentifiable) os << "  " << u << '\n';
+  for (const auto& n : notes) os << "  note: " << n << '\n';
   return os.str();
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "scene/input_error.h"
 #include "scene/scene_json.h"
@@ -129,6 +130,13 @@ namespace {
 // leaves six orders of magnitude for round-off and catches any edit that moves a band.
 constexpr double kCovarianceRoundOff = 1e-9;
 
+std::string number_text(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
 [[noreturn]] void bad(const std::string& where, const std::string& message) {
   throw InputError("--calibration", where + ": " + message);
 }
@@ -164,7 +172,7 @@ void check_covariance(const CalibratedModel& m, const std::string& where) {
           bad(where, entry(i, k) + " is not 0, but fit[" + std::to_string(i) +
                          "] is marked identifiable: false (held at its start, not drawn)");
     } else if (!(C[i][i] > 0)) {
-      bad(where, entry(i, i) + " = " + std::to_string(C[i][i]) +
+      bad(where, entry(i, i) + " = " + number_text(C[i][i]) +
                      ": the variance of an identifiable parameter must be > 0");
     }
   }
@@ -174,7 +182,7 @@ void check_covariance(const CalibratedModel& m, const std::string& where) {
       if (std::abs(C[i][k] - C[k][i]) > kCovarianceRoundOff * scale)
         bad(where, entry(i, k) + " differs from " + entry(k, i) + ": a covariance is symmetric");
       if (scale > 0 && std::abs(C[i][k]) > (1 + kCovarianceRoundOff) * scale)
-        bad(where, entry(i, k) + " gives a correlation of " + std::to_string(C[i][k] / scale) +
+        bad(where, entry(i, k) + " gives a correlation of " + number_text(C[i][k] / scale) +
                        ": must lie in [-1, 1]");
     }
   Eigen::MatrixXd R =
@@ -189,7 +197,7 @@ void check_covariance(const CalibratedModel& m, const std::string& where) {
     bad(where,
         "covariance is not positive semi-definite (its correlation matrix has the "
         "eigenvalue " +
-            std::to_string(lowest) + "): no distribution has it");
+            number_text(lowest) + "): no distribution has it");
 }
 
 // A request's InputError in the file's words: the command-line flags a request's checks name

@@ -169,8 +169,7 @@ TEST(Calibration, AFitThatDidNotConvergeStartsAgainFromTheScan) {
   ASSERT_FALSE(r.notes.empty()) << r.brief() << r.failure;
   EXPECT_NE(r.notes[0].find("coarse scan"), std::string::npos) << r.brief() << r.solver_report;
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_NE(r.solver_report.find("Termination: CONVERGENCE"), std::string::npos)
-      << r.solver_report;
+  EXPECT_NE(r.solver_report.find("Termination: CONVERGENCE"), std::string::npos) << r.solver_report;
 }
 
 // A dashpot fitted on a scene without one starts from a coarse scan over Zener's lambda and
