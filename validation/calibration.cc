@@ -1,6 +1,7 @@
 #include "validation/calibration.h"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -121,6 +122,16 @@ class Model {
       const Entry& e = entries_[k];
       const double d = *problem_.data.points[e.point].value[static_cast<std::size_t>(e.q)];
       r[k] = (model_value((*points)[e.point].result, e.q) - d) / uncertainty(e);
+      // A captured impact has t_contact = inf: an evaluation Ceres cannot use. Said so (false)
+      // rather than handed over: a trial step into capture is then rejected like any failed
+      // step, and a start in capture moves to the scan (fit()); handed over, Ceres stopped the
+      // fit and dumped its residual block to the log.
+      if (!std::isfinite(r[k])) {
+        last_failure_ = at(theta) + ", v0 = " + std::to_string(velocities_[e.point]) +
+                        " m/s: the model's " + std::string(to_string(e.q)) + " is not finite" +
+                        (e.q == Quantity::t_contact ? " (captured: no rebound)" : "");
+        return false;
+      }
     }
     return true;
   }
@@ -190,7 +201,19 @@ struct CeresProblem {
   }
 };
 
+// Ceres logs through glog to stderr ("Terminating: Residual and Jacobian evaluation failed.",
+// dumps of residual blocks): words for Ceres' developers, not for ivv's users, who get every
+// failure from the Summary in calibrate's own words. Below FATAL, its log is switched off once.
+void silence_ceres_log() {
+  static const bool silenced = [] {
+    FLAGS_minloglevel = google::GLOG_FATAL;
+    return true;
+  }();
+  (void)silenced;
+}
+
 ceres::Solver::Options solver_options(int max_iterations) {
+  silence_ceres_log();
   ceres::Solver::Options o;
   o.linear_solver_type = ceres::DENSE_QR;
   o.max_num_iterations = max_iterations;

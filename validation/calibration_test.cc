@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/input_error.h"
+#include "validation/model_runs.h"
 #include "validation/parameters.h"
 #include "validation/synthetic.h"
 
@@ -170,6 +171,41 @@ TEST(Calibration, AFitThatDidNotConvergeStartsAgainFromTheScan) {
   EXPECT_NE(r.notes[0].find("coarse scan"), std::string::npos) << r.brief() << r.solver_report;
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_NE(r.solver_report.find("Termination: CONVERGENCE"), std::string::npos) << r.solver_report;
+}
+
+// With a t_contact column, a start at which impacts are captured (t_contact = inf) is no
+// residual Ceres can use: the fit moves to the scan's start and says so, instead of failing at
+// once (it did, with Ceres' residual-block dump in the log).
+TEST(Calibration, ACapturedStartMovesToTheScan) {
+  SimulationRequest truth = paper(0.0);
+  truth.scene.damping = Damping::coefficient(11440);
+  const std::vector<double> v0 = log_velocities(0.3, 5, 8);
+  MeasuredData data;
+  data.source = "test";
+  data.has_quantity = {true, false, true};
+  data.has_uncertainty = {true, false, true};
+  const auto runs = run_model_points(truth, {}, {}, v0, 1);
+  for (std::size_t i = 0; i < v0.size(); ++i) {
+    Measurement m;
+    m.v0 = v0[i];
+    m.value[0] = runs[i].result.e;
+    m.uncertainty[0] = 0.01;
+    m.value[2] = runs[i].result.t_contact;
+    m.uncertainty[2] = 0.01 * runs[i].result.t_contact;
+    m.line = static_cast<int>(i) + 2;
+    data.points.push_back(m);
+  }
+  SimulationRequest start = truth;
+  start.scene.damping = Damping::coefficient(300);  // zeta ~ 4: every impact captured
+  CalibrationOptions o = fitting({"c"});
+  o.profile = false;
+  const CalibrationResult r = calibrate({start, data}, o);
+  ASSERT_TRUE(r.ok) << r.failure;
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes[0].find("coarse scan"), std::string::npos) << r.notes[0];
+  // noise-free data of the same model: c comes back to its convergence and the runs' error;
+  // 1e-3 relative is 0.05 of its standard error (~230 N s/m with these u)
+  EXPECT_NEAR(r.find("c")->value, 11440, 1e-3 * 11440) << r.brief();
 }
 
 // A dashpot fitted on a scene without one starts from a coarse scan over Zener's lambda and
