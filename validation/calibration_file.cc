@@ -86,7 +86,9 @@ json calibration_json(const CalibrationProblem& problem, const CalibrationResult
             {"estimated_noise", r.estimated_noise},
             {"residuals", json::array()},
             {"data", {{"source", problem.data.source}, {"provenance", problem.data.provenance}}},
-            {"solver_report", r.solver_report}};
+            {"solver_report", r.solver_report},
+            {"notes", r.notes},
+            {"determined", r.determined}};
   for (const auto& [name, value] : m.request.parameters) j["parameters"][name] = value;
   for (const auto& p : r.parameters) j["fit"].push_back(fit_json(p));
   for (const auto& row : r.correlation) {

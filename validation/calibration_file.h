@@ -16,7 +16,9 @@
 //   chi2, dof, p_value (null when the noise was estimated), sigma {e, F_max, t_contact} (the
 //   estimated sigmas, null when stated), rtol, stated_error, unidentifiable [sentences],
 //   residuals [{v0, quantity, measured, model, uncertainty, normalised, line}],
-//   data {source, provenance [lines]}, solver_report
+//   data {source, provenance [lines]}, solver_report, notes [how the fit got there: a restart
+//   from the scan, a dashpot started from a scan, the profile intervals' cost], determined (the
+//   directions the data determine: the k of --compare)
 // Reading checks the format tag and every field it needs: InputError("--calibration", ...)
 // naming the field otherwise. A hand-edited file is bad input, naming the entry, when its
 // covariance is not one: a negative variance (or a zero one for an identifiable parameter),

@@ -44,6 +44,9 @@ void expect_round_trip(const SimulationRequest& truth, const std::string& name) 
   o.profile = false;
   const CalibrationResult r = calibrate(problem, o);
   ASSERT_TRUE(r.ok) << r.failure;
+  const nlohmann::json file = calibration_json(problem, r);
+  EXPECT_EQ(file["determined"], 1);
+  EXPECT_TRUE(file["notes"].is_array());
   const CalibratedModel direct = calibrated_model(problem, r);
   const CalibratedModel read =
       read_calibration(nlohmann::json::parse(calibration_json(problem, r).dump()), "mem");
