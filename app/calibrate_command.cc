@@ -1,6 +1,11 @@
 #include "app/calibrate_command.h"
 
+#include <chrono>
+#include <cmath>
+#include <functional>
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 #include "app/cli_args.h"
 #include "app/command.h"
@@ -48,10 +53,30 @@ std::map<std::string, Bounds> parse_bounds(const std::vector<std::string>& items
   return out;
 }
 
+// "NAME=VALUE" items of --start: each a finite number > 0 (a fit starts from one), named
+// by --start and its name (not by --param or the scene field the value would land in).
+std::map<std::string, double> parse_starts(const std::vector<std::string>& items) {
+  std::map<std::string, double> out;
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--start", "'" + item + "': expected NAME=VALUE, e.g. c=8000");
+    const std::string name = item.substr(0, eq);
+    const double value = parse_number(item.substr(eq + 1), "--start " + name);
+    if (!(std::isfinite(value) && value > 0))
+      throw InputError("--start " + name,
+                       "must be a finite number > 0 (a fit starts from one), "
+                       "got '" +
+                           item.substr(eq + 1) + "'");
+    if (!out.emplace(name, value).second) throw InputError("--start " + name, "given twice");
+  }
+  return out;
+}
+
 CalibrationProblem problem_for(const SimulationRequest& base, const MeasuredData& data,
                                const std::vector<std::string>& start) {
   CalibrationProblem p{base, data};
-  for (const auto& [name, value] : parse_parameters(start)) {
+  for (const auto& [name, value] : parse_starts(start)) {
     parameter_info(p.request, name);  // throws naming the fittable parameters
     set_parameter(p.request, name, value);
   }
@@ -90,7 +115,7 @@ std::pair<CalibrationProblem, CalibrationOptions> compared(const CalibrationProb
     throw InputError("--compare", "law '" + law + "' has none of the --fit parameters");
   for (const auto& [name, b] : options.bounds)
     if (std::find(o.fit.begin(), o.fit.end(), name) != o.fit.end()) o.bounds[name] = b;
-  for (const auto& [name, value] : parse_parameters(start))
+  for (const auto& [name, value] : parse_starts(start))
     if (std::find(fittable.begin(), fittable.end(), name) != fittable.end())
       set_parameter(p.request, name, value);
   return {p, o};
@@ -132,6 +157,27 @@ ReportInputs report_inputs(const CalibrationProblem& p, const CalibrationResult&
   return r;
 }
 
+// Progress of a long calibration on stderr: silent for the first 2 s (most fits end sooner),
+// then at most one line every 5 s (a 1e5-row fit takes minutes, its profile intervals more),
+// e.g. "ivv calibrate: fit, iteration 12 of at most 100 (41 s)". Not a sweep's ProgressLine:
+// an iteration count has no rate or ETA.
+std::function<void(std::string_view, std::size_t, std::size_t)> progress_lines() {
+  using Clock = std::chrono::steady_clock;
+  struct State {
+    Clock::time_point start = Clock::now(), last{};
+  };
+  auto state = std::make_shared<State>();
+  return [state](std::string_view stage, std::size_t done, std::size_t total) {
+    const auto now = Clock::now();
+    const double elapsed = std::chrono::duration<double>(now - state->start).count();
+    if (elapsed < 2.0 || std::chrono::duration<double>(now - state->last).count() < 5.0) return;
+    state->last = now;
+    std::cerr << "ivv calibrate: " << stage << (stage == "fit" ? ", iteration " : ", end ") << done
+              << (stage == "fit" ? " of at most " : " of ") << total << " ("
+              << static_cast<long>(elapsed) << " s)" << std::endl;
+  };
+}
+
 }  // namespace
 
 void add_calibrate_flags(CLI::App& cmd, CalibrateFlags& f) {
@@ -157,6 +203,9 @@ void add_calibrate_flags(CLI::App& cmd, CalibrateFlags& f) {
 int run_calibrate(const SimulationRequest& base, const CalibrateFlags& f,
                   const std::string& command_line) {
   if (f.threads < 0) throw InputError("--threads", "must be >= 0 (0: all cores)");
+  // every output checked before any work: a directory, a FIFO or a missing directory for --out
+  // would otherwise be found after the whole fit
+  if (!f.out.empty()) resolve_output_path(f.out, "--out");
   if (!f.report_dir.empty()) reports::check_report_dir(f.report_dir);
   const MeasuredData data = read_measured_data(f.data);
   const CalibrationProblem problem = problem_for(base, data, f.start);
@@ -166,6 +215,7 @@ int run_calibrate(const SimulationRequest& base, const CalibrateFlags& f,
   options.scan = f.scan;
   options.profile = !f.no_profile;
   options.threads = f.threads;
+  options.progress = progress_lines();
   options.validate(problem.request);
   std::vector<std::pair<CalibrationProblem, CalibrationOptions>> others;
   for (const auto& law : split_list(f.compare))
@@ -198,7 +248,8 @@ int run_calibrate(const SimulationRequest& base, const CalibrateFlags& f,
     return 1;
   }
   if (!f.out.empty())
-    write_file_atomically(f.out, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
+    write_file_atomically(
+        f.out, [&](std::ostream& os) { os << j.dump(2) << "\n"; }, "--out");
   if (!f.report_dir.empty()) {
     const ReportInputs in =
         report_inputs(problem, fit, ranking ? &*ranking : nullptr, problems, names, f.threads);
@@ -210,6 +261,23 @@ int run_calibrate(const SimulationRequest& base, const CalibrateFlags& f,
   return 0;
 }
 
+namespace {
+
+// A parameter the calibration could not determine is held at its start value, which the data
+// did not choose: said on stderr whatever the output format, never only in a JSON field.
+void warn_held(const CalibratedModel& model) {
+  for (std::size_t i = 0; i < model.names.size(); ++i)
+    if (!model.identifiable[i])
+      std::cerr << "ivv: warning: " << model.names[i]
+                << " was not determined by the calibration data (UNIDENTIFIABLE); the prediction "
+                   "holds it at its start value "
+                << model.values[i]
+                << ", which the data did not choose, and the band does not include its "
+                   "uncertainty\n";
+}
+
+}  // namespace
+
 void add_predict_flags(CLI::App& cmd, PredictFlags& f) {
   cmd.add_option("--calibration", f.calibration, "the calibration JSON (ivv calibrate --out)")
       ->required();
@@ -219,10 +287,79 @@ void add_predict_flags(CLI::App& cmd, PredictFlags& f) {
   v0->excludes(data);
   cmd.add_flag("--log", f.log, "log-spaced --v0 grid");
   cmd.add_option("--samples", f.samples, "Monte Carlo draws (default 10000)");
-  cmd.add_option("--seed", f.seed, "seed of the draws (default 1)");
+  // checked as text: CLI11 would wrap "-1" into 18446744073709551615 silently
+  cmd.add_option("--seed", f.seed, "seed of the draws (default 1)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return text.find('-') == std::string::npos
+                       ? std::string()
+                       : "must be an integer in [0, 2^64), got '" + text + "'";
+          },
+          "UINT64"));
   cmd.add_flag("--json", f.json, "print the band (and comparison) as JSON");
   app::add_threads_option(cmd, f.threads, "worker threads (0 = all cores)");
 }
+
+namespace {
+
+nlohmann::json prediction_json(const Prediction& band, const ValidationComparison* vv) {
+  nlohmann::json j = {{"samples", band.samples},
+                      {"seed", band.seed},
+                      {"redrawn", band.redrawn},
+                      {"held_at_start", band.held},
+                      {"band", nlohmann::json::array()}};
+  for (const auto& b : band.points)
+    j["band"].push_back({{"v0", b.v0},
+                         {"e", b.e_nominal},
+                         {"e_lo95", b.e_lo},
+                         {"e_hi95", b.e_hi},
+                         {"u_input", b.u_input},
+                         {"u_num", b.u_num}});
+  if (!vv) return j;
+  j["vv20"] = nlohmann::json::array();
+  for (const auto& p : vv->points)
+    j["vv20"].push_back({{"v0", p.v0},
+                         {"S", p.S},
+                         {"D", p.D},
+                         {"E", p.E},
+                         {"u_num", p.u_num},
+                         {"u_input", p.u_input},
+                         {"u_D", p.u_D},
+                         {"u_val", p.u_val},
+                         {"exceeds_2u_val", p.exceeds},
+                         {"line", p.line}});
+  j["exceeding"] = vv->exceeding;
+  return j;
+}
+
+void print_prediction(const CalibratedModel& model, const Prediction& band,
+                      const ValidationComparison* vv) {
+  std::cout << "model " << model.law << "; " << band.samples << " Monte Carlo draws (seed "
+            << band.seed << ") over the fitted covariance";
+  for (const auto& h : band.held)
+    std::cout << "; " << h << " NOT DETERMINED, held at its start (band without its uncertainty)";
+  std::cout << "\n";
+  char line[200];
+  if (!vv) {
+    std::cout << "  v0 [m/s]        e    95 % band            u_input    u_num\n";
+    for (const auto& b : band.points) {
+      std::snprintf(line, sizeof line, "%10.4g %8.5f  [%8.5f, %8.5f]  %9.3g  %7.1e\n", b.v0,
+                    b.e_nominal, b.e_lo, b.e_hi, b.u_input, b.u_num);
+      std::cout << line;
+    }
+    return;
+  }
+  std::cout << "ASME V&V 20: E = S - D, u_val = sqrt(u_num^2 + u_input^2 + u_D^2)\n"
+            << "  v0 [m/s]   S (model)  D (data)        E     u_val   |E|/u_val\n";
+  for (const auto& p : vv->points) {
+    std::snprintf(line, sizeof line, "%10.4g %10.5f %9.5f %+9.5f %9.3g %8.2f%s\n", p.v0, p.S, p.D,
+                  p.E, p.u_val, std::abs(p.E) / p.u_val, p.exceeds ? "  > 2: model error" : "");
+    std::cout << line;
+  }
+  std::cout << vv->summary() << "\n";
+}
+
+}  // namespace
 
 int run_predict(const PredictFlags& f) {
   if (f.v0.empty() == f.data.empty())
@@ -242,65 +379,22 @@ int run_predict(const PredictFlags& f) {
     vv = compare_with_data(model, read_measured_data(f.data), o);
     band = vv->prediction;
   } else {
-    band = predict(model, parse_grid(f.v0, "--v0", f.log), o);
+    const std::vector<double> speeds = parse_grid(f.v0, "--v0", f.log);
+    for (double v : speeds)
+      if (!(std::isfinite(v) && v > 0))
+        throw InputError("--v0", "every speed must be a finite number > 0 m/s, got " +
+                                     (std::ostringstream() << v).str());
+    band = predict(model, speeds, o);
   }
   if (!band.ok()) {
     std::cerr << "ivv: failed: " << band.failures.front() << "\n";
     return 1;
   }
-  nlohmann::json j = {{"samples", band.samples},
-                      {"seed", band.seed},
-                      {"redrawn", band.redrawn},
-                      {"held_at_start", band.held},
-                      {"band", nlohmann::json::array()}};
-  for (const auto& b : band.points)
-    j["band"].push_back({{"v0", b.v0},
-                         {"e", b.e_nominal},
-                         {"e_lo95", b.e_lo},
-                         {"e_hi95", b.e_hi},
-                         {"u_input", b.u_input},
-                         {"u_num", b.u_num}});
-  if (vv) {
-    j["vv20"] = nlohmann::json::array();
-    for (const auto& p : vv->points)
-      j["vv20"].push_back({{"v0", p.v0},
-                           {"S", p.S},
-                           {"D", p.D},
-                           {"E", p.E},
-                           {"u_num", p.u_num},
-                           {"u_input", p.u_input},
-                           {"u_D", p.u_D},
-                           {"u_val", p.u_val},
-                           {"exceeds_2u_val", p.exceeds},
-                           {"line", p.line}});
-    j["exceeding"] = vv->exceeding;
-  }
-  if (f.json) {
-    std::cout << j.dump(2) << "\n";
-    return 0;
-  }
-  std::cout << "model " << model.law << "; " << band.samples << " Monte Carlo draws (seed "
-            << band.seed << ") over the fitted covariance";
-  for (const auto& h : band.held) std::cout << "; " << h << " held at its start (unidentifiable)";
-  std::cout << "\n";
-  char line[200];
-  if (!vv) {
-    std::cout << "  v0 [m/s]        e    95 % band            u_input    u_num\n";
-    for (const auto& b : band.points) {
-      std::snprintf(line, sizeof line, "%10.4g %8.5f  [%8.5f, %8.5f]  %9.3g  %7.1e\n", b.v0,
-                    b.e_nominal, b.e_lo, b.e_hi, b.u_input, b.u_num);
-      std::cout << line;
-    }
-    return 0;
-  }
-  std::cout << "ASME V&V 20: E = S - D, u_val = sqrt(u_num^2 + u_input^2 + u_D^2)\n"
-            << "  v0 [m/s]   S (model)  D (data)        E     u_val   |E|/u_val\n";
-  for (const auto& p : vv->points) {
-    std::snprintf(line, sizeof line, "%10.4g %10.5f %9.5f %+9.5f %9.3g %8.2f%s\n", p.v0, p.S, p.D,
-                  p.E, p.u_val, std::abs(p.E) / p.u_val, p.exceeds ? "  > 2: model error" : "");
-    std::cout << line;
-  }
-  std::cout << vv->summary() << "\n";
+  warn_held(model);
+  if (f.json)
+    std::cout << prediction_json(band, vv ? &*vv : nullptr).dump(2) << "\n";
+  else
+    print_prediction(model, band, vv ? &*vv : nullptr);
   return 0;
 }
 

@@ -1,6 +1,7 @@
 // Fuzz target: the scene TOML parser (scene/scene.h parse_scene_toml).
-// Contract under test (docs/design.md §7): any text is either a valid scene, whose derived parameters
-// and scales are finite and positive, or an InputError naming a field; nothing else escapes.
+// Contract under test (docs/design.md §7): any text is either a valid scene, whose derived
+// parameters and scales are finite and positive and whose JSON form (scene/scene_json.h) reads
+// back as the same scene, or an InputError naming a field; nothing else escapes.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include "fuzz/fuzz_targets.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 namespace {
 
@@ -20,6 +22,17 @@ void expect(bool ok, const char* what) {
 
 bool positive(double v) {
   return std::isfinite(v) && v > 0.0;
+}
+
+// Every scene a file can give is written and read back by the one JSON form (calibration
+// files carry scenes this way; a [damping] lambda or a [structure] once crashed the writer).
+void expect_json_round_trip(const ivv::Scene& s) {
+  try {
+    const nlohmann::json j = ivv::scene_json(s);
+    expect(ivv::scene_json(ivv::scene_from_json(j, "")) == j, "the scene's JSON reads back");
+  } catch (...) {
+    expect(false, "a valid scene is written and read back as JSON without an exception");
+  }
 }
 
 }  // namespace
@@ -41,6 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       expect(positive(k.time) && positive(k.length) && positive(k.force) && positive(k.energy),
              "scales finite and > 0");
     }
+    expect_json_round_trip(s);
   } catch (const ivv::InputError& e) {
     expect(!e.field().empty(), "an InputError names its field");
   }

@@ -203,7 +203,7 @@ std::string calibration_section_html(const CalibrationView& v, const std::string
 
 fs::path write_calibration_report(const CalibrationView& v, const fs::path& dir,
                                   const std::string& command_line) {
-  check_report_dir(dir);
+  create_output_directory(dir, "--report");
   const std::string body =
       "<h1>Calibration: " + escape(v.fit->law) + "</h1>\n<p><small>command: <code>" +
       escape(command_line) + "</code></small></p>\n" +

@@ -7,65 +7,6 @@
 #include "solver/infinite_plate_check.h"
 
 namespace ivv {
-namespace {
-// JSON has no infinity: an absent dashpot is null.
-nlohmann::json finite_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nullptr;
-}
-}  // namespace
-
-nlohmann::json scene_json(const Scene& s, const DerivedParameters& p) {
-  auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nullptr; };
-  // yield-related values are null without a yield strength; target_youngs_modulus is null
-  // (and rigid_target true) for a rigid target
-  return {
-      {"name", s.name},
-      {"mass", s.mass},
-      {"radius", s.radius},
-      {"impactor_youngs_modulus", s.impactor_youngs_modulus},
-      {"impactor_poisson_ratio", s.impactor_poisson_ratio},
-      {"target_youngs_modulus", finite_or_null(s.target_youngs_modulus)},
-      {"target_poisson_ratio", s.target_poisson_ratio},
-      {"rigid_target", s.rigid_target()},
-      {"target_radius", optional(s.target_radius)},
-      {"target_mass", optional(s.target_mass)},
-      {"yield_strength", optional(s.yield_strength)},
-      {"v0", s.velocity},
-      {"effective_radius", p.effective_radius},
-      {"effective_mass", p.effective_mass},
-      {"E_star", p.E_star},
-      {"K_h", p.K_h},
-      {"z_y", finite_or_null(p.z_y)},
-      {"K_y", finite_or_null(p.K_y)},
-      {"omega0", finite_or_null(p.omega0)},
-      {"zeta", finite_or_null(p.zeta)},
-      {"c", finite_or_null(p.c)},
-      {"v_yield", finite_or_null(p.v_yield)},
-      // Zener's lambda = m*^{3/5} K_h^{2/5} v0^{1/5}/c (scene/structure.h): null without a dashpot
-      {"zener_lambda", p.has_dashpot() ? nlohmann::json(p.zener_lambda) : nullptr},
-      {"dashpot_source",
-       s.damping.kind == Damping::Kind::none ? "none" : damping_field(s.damping.kind)},
-      {"structure", structure_json(s)},
-  };
-}
-
-nlohmann::json structure_json(const Scene& s) {
-  if (s.damping.kind != Damping::Kind::structure) return nullptr;
-  const Structure& st = s.damping.structure;
-  const StructureDashpot d = structure_dashpot(st, s.target_youngs_modulus, s.target_poisson_ratio);
-  return {
-      {"kind", std::string(structure_kind_name(st.kind))},
-      {"density", st.density},
-      {"thickness", st.has_plate() ? nlohmann::json(st.thickness) : nullptr},
-      {"area", st.has_bar() ? nlohmann::json(st.area) : nullptr},
-      {"bending_stiffness", finite_or_null(d.bending_stiffness)},
-      {"bending_stiffness_given", d.bending_stiffness_given},
-      {"c_plate", finite_or_null(d.c_plate)},
-      {"c_bar", finite_or_null(d.c_bar)},
-      {"c", finite_or_null(d.c)},
-      {"formula", structure_formula(st)},
-  };
-}
 
 nlohmann::json result_json(const ImpactResult& r) {
   nlohmann::json events = nlohmann::json::array();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "scene/scene_json.h"  // scene_json(), structure_json(): the one scene writer
 #include "solver/model_choice.h"
 #include "solver/request_options.h"
 #include "solver/result.h"
@@ -13,10 +14,7 @@
 
 namespace ivv {
 
-nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
 nlohmann::json result_json(const ImpactResult& r);
-// The [structure] of a scene: each element's dashpot, the series c, the formula; null without.
-nlohmann::json structure_json(const Scene& scene);
 // {"scene": ..., "request": ..., "result": ...}
 // The law of a request: its summary, every parameter in use (defaults included) and, for an
 // expression law, its expressions and contact end.

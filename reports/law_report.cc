@@ -64,18 +64,12 @@ std::string law_section_html(const conformance::Report& report, const std::strin
 }
 
 void check_report_dir(const fs::path& dir) {
-  if (dir.empty()) throw InputError("--report", "a directory is required");
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw InputError("--report", "'" + dir.string() + "' exists and is not a directory");
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError("--report", "cannot create the directory '" + dir.string() + "'");
+  check_output_directory(dir, "--report");
 }
 
 fs::path write_law_report(const conformance::Report& report, const fs::path& dir,
                           const std::string& command_line) {
-  check_report_dir(dir);
+  create_output_directory(dir, "--report");
   const std::string body = "<h1>Contact-law conformance: " + escape(report.law) + "</h1>\n<p>" +
                            escape(report.brief()) + "</p>\n<p><small>command: <code>" +
                            escape(command_line) + "</code></small></p>\n" +

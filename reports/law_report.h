@@ -26,7 +26,8 @@ std::string law_section_html(const conformance::Report& report, const std::strin
                              const Source& table_source = Source::rows_are_cases());
 
 // Throws InputError("--report", ...) unless DIR is a directory or can be created (checked
-// before any computation, so bad input costs nothing).
+// before any computation, so bad input costs nothing); creates nothing (solver/atomic_file.h:
+// check_output_directory): the writers create DIR, so a run that fails leaves none.
 void check_report_dir(const std::filesystem::path& dir);
 
 // Writes DIR/index.html (same page frame and style as the main report) and DIR/results.json

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -79,6 +80,37 @@ fs::path resolve_output_path(const fs::path& path, const std::string& field, boo
   if (!fs::is_directory(dir, ec))
     throw InputError(name, "directory '" + dir.string() + "' does not exist");
   return target;
+}
+
+void check_output_directory(const fs::path& dir, const std::string& field) {
+  if (dir.empty()) throw InputError(field, "a directory is required (got '')");
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  fs::path existing = dir;
+  if (fs::exists(st)) {
+    if (!fs::is_directory(st))
+      throw InputError(field, "'" + dir.string() + "' is " + describe(st.type()) +
+                                  "; an output directory must be a directory or a new path");
+  } else {
+    // the nearest ancestor that exists is where the new directory will be made
+    existing = fs::absolute(dir, ec).parent_path();
+    while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.root_path())
+      existing = existing.parent_path();
+    if (!fs::is_directory(existing, ec))
+      throw InputError(field, "'" + dir.string() + "' cannot be created: '" + existing.string() +
+                                  "' is " + describe(fs::status(existing, ec).type()));
+  }
+  if (access(existing.c_str(), W_OK | X_OK) != 0)
+    throw InputError(field, "'" + existing.string() + "' is not writable (" +
+                                std::string(std::strerror(errno)) + ")");
+}
+
+void create_output_directory(const fs::path& dir, const std::string& field) {
+  check_output_directory(dir, field);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(field, "cannot create the directory '" + dir.string() + "': " + ec.message());
 }
 
 namespace {

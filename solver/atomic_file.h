@@ -28,6 +28,16 @@ namespace ivv {
 std::filesystem::path resolve_output_path(const std::filesystem::path& path,
                                           const std::string& field, bool allow_stdout = false);
 
+// The check of an output directory (a report's DIR), the same for every command: DIR is an
+// existing directory, or a new path whose nearest existing ancestor is a directory this process
+// may write in. Nothing is created (create it when the output is written, so that a run that
+// fails leaves no empty directory behind). Throws InputError(field, ...) naming what DIR, or the
+// ancestor, is instead. Call it before a long computation, as resolve_output_path.
+void check_output_directory(const std::filesystem::path& dir, const std::string& field);
+
+// Creates DIR (and missing parents) for writing; InputError(field, ...) when it cannot.
+void create_output_directory(const std::filesystem::path& dir, const std::string& field);
+
 // `write` fills the stream; throws InputError(field, ...) for a destination that cannot be
 // written (see above) and std::runtime_error naming the path if the write itself fails. An
 // empty `field` names the path instead.

@@ -17,10 +17,17 @@
 // kRelativeStep), bounds per parameter (positive by default, validation/parameters.h), started
 // from the request's values or, with `scan`, from the best point of a coarse log grid
 // (factors 10^{-1, -1/2, 0, 1/2, 1} around the start, within bounds, up to 3 parameters).
+// A dashpot fitted (c or zeta) on a scene without one starts from a coarse scan over Zener's
+// lambda = 0.01 .. 100 at the data's median v0 (the result's notes say where).
 //
 // Uncertainty. At the estimate, J = d r / d ln theta (the problem rebuilt around the estimate,
 // so x = theta/theta_hat). With the SVD J = U S V^T, the linearised standard error of
-// ln theta_j is sqrt(sum_k V_jk^2 / s_k^2). A parameter whose standard error of ln theta
+// ln theta_j is sqrt(sum_k V_jk^2 / s_k^2) over the directions J resolves (s_k above the
+// integration error of J, 1e-2 sqrt(n): validation/model_runs.h). A direction below that, and
+// an exactly null one (a parameter with no effect on the data), is a combination the data do
+// not see: the parameters with a share V_jk^2 >= 0.01 in it are unidentifiable with it, and
+// the others are untouched (dividing by s_k there gave 0/0 for every parameter).
+// A parameter whose standard error of ln theta
 // exceeds kUnidentifiable = 1 is UNIDENTIFIABLE: its 95 % interval would span more than a
 // factor exp(1.96) ~ 7 either way, so the data cannot determine even its order of magnitude;
 // it gets no value, standard error or interval. The directions with 1/s_k > kUnidentifiable are
@@ -28,21 +35,37 @@
 // the other parameters' errors are conditional on the unidentifiable combinations. The
 // correlation matrix is that of the pseudo-inverse over every direction with
 // s_k > 1e-12 s_max, so two parameters only their combination determines show +-1.
-// 95 % intervals: theta_hat +- t * SE (t = 1.96 with stated uncertainties, Student t with
-// n - p dof when sigma is estimated). Profile-likelihood intervals (the parameter fixed, the
-// others re-fitted, the ends where chi^2 rises by the same t^2) are computed for every
-// identifiable parameter and reported where they differ from the linearised ends by more than
-// 10 % of the linearised half-width.
+// The dof are n minus the determined directions (p minus those dropped), which is also the k
+// of the information criteria (validation/comparison.h).
+// 95 % intervals: linearised in ln theta, theta_hat exp(+-t SE_ln) with SE_ln = SE/theta_hat
+// (t = 1.96 with stated uncertainties, Student t with those dof when sigma is estimated), so a
+// positive parameter's interval stays positive; to first order in SE_ln it is theta_hat +- t SE.
+// Profile-likelihood intervals (the parameter fixed, the others re-fitted, the ends where chi^2
+// rises by the same t^2) are computed for every identifiable parameter and reported where they
+// differ from the linearised ends by more than 10 % of the linearised half-width.
 //
-// Success: Ceres converged (a usable solution) and the covariance was computed. Failure of
-// the solver or of the covariance is CalibrationResult::failure with Ceres' own words, never a
-// number that looks like an estimate.
+// Noise without degrees of freedom: a sigma estimated from the residuals needs n > p (and
+// n > the determined directions). Without them the parameters can absorb every residual, sigma
+// is 0/0 and no standard error exists: that is a failure naming the values that fit the data,
+// never an interval of zero width.
+//
+// Cost: the profile intervals re-fit the other parameters at every trial value of each one
+// (about 2 x 10 re-fits per parameter); the result's notes state the model runs and the time
+// they took, and CalibrationOptions::profile = false (--no-profile) skips them.
+//
+// Success: Ceres converged (termination CONVERGENCE) and the covariance was computed. When
+// Ceres stops without converging from the request's start (NO_CONVERGENCE: the iteration
+// limit), the fit starts once more from the coarse scan (up to 3 parameters) and the result
+// says so in `notes`. Failure of the solver or of the covariance is CalibrationResult::failure
+// with Ceres' own words, never a number that looks like an estimate.
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solver/simulate.h"
@@ -65,6 +88,10 @@ struct CalibrationOptions {
   bool profile = true;                   // profile-likelihood intervals
   int threads = 0;                       // model runs in parallel (0: all cores)
   int max_iterations = 100;
+  // Called as the work goes: ("fit", Ceres iteration, max_iterations) after each iteration of
+  // the fit, ("profile intervals", ends done, ends in all) after each end of a profile
+  // interval (each end is a root search of re-fits, the costliest stage on large data).
+  std::function<void(std::string_view stage, std::size_t done, std::size_t total)> progress;
   // Throws InputError naming the flag (--fit, --bounds) when invalid for this request.
   void validate(const SimulationRequest& request) const;
 };
@@ -78,7 +105,7 @@ struct ParameterEstimate {
   // NaN when unidentifiable:
   double value = 0.0;
   double standard_error = 0.0;
-  double lower95 = 0.0, upper95 = 0.0;  // linearised
+  double lower95 = 0.0, upper95 = 0.0;  // linearised in ln theta
   // Profile-likelihood interval, when it was computed (NaN end: the profile did not reach the
   // threshold within the bounds).
   std::optional<std::pair<double, double>> profile95;
@@ -105,15 +132,17 @@ struct CalibrationResult {
   std::vector<std::string> unidentifiable;  // sentences naming parameters and combinations
   double chi2 = 0.0;
   int points = 0;                              // residuals (n)
-  int dof = 0;                                 // n - p_identifiable
+  int determined = 0;                          // directions the data determine (rank of J)
+  int dof = 0;                                 // n - determined
   std::optional<double> p_value;               // absent when a sigma was estimated
   std::vector<std::string> estimated_noise;    // e.g. "e: sigma = 0.0123 estimated from residuals"
   std::array<std::optional<double>, 3> sigma;  // per Quantity: the estimated sigma, if any
   std::vector<Residual> residuals;
-  double rtol = 0.0;          // the tolerance rule's choice (validation/model_runs.h)
-  double stated_error = 0.0;  // the largest stated integration error of e at the estimate
-  int model_evaluations = 0;  // impacts run
-  std::string solver_report;  // Ceres Summary::BriefReport()
+  double rtol = 0.0;               // the tolerance rule's choice (validation/model_runs.h)
+  double stated_error = 0.0;       // the largest stated integration error of e at the estimate
+  int model_evaluations = 0;       // impacts run
+  std::string solver_report;       // Ceres Summary::BriefReport()
+  std::vector<std::string> notes;  // how the fit got there, when not the plain way (a restart)
 
   double chi2_per_dof() const { return dof > 0 ? chi2 / dof : 0.0; }
   const ParameterEstimate* find(const std::string& name) const;

@@ -1,8 +1,13 @@
 #include "validation/calibration_file.h"
 
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "scene/input_error.h"
+#include "scene/scene_json.h"
 #include "validation/parameters.h"
 
 namespace ivv::validation {
@@ -15,23 +20,6 @@ json optional_number(const std::optional<double>& v) {
 }
 json number_or_null(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
-}
-
-json scene_json(const Scene& s) {
-  const char* kinds[] = {"none", "ratio", "coefficient"};
-  return {
-      {"name", s.name},
-      {"mass", s.mass},
-      {"radius", s.radius},
-      {"impactor_youngs_modulus", s.impactor_youngs_modulus},
-      {"impactor_poisson_ratio", s.impactor_poisson_ratio},
-      {"target_youngs_modulus", number_or_null(s.target_youngs_modulus)},
-      {"target_poisson_ratio", s.target_poisson_ratio},
-      {"yield_strength", optional_number(s.yield_strength)},
-      {"target_radius", optional_number(s.target_radius)},
-      {"target_mass", optional_number(s.target_mass)},
-      {"velocity", s.velocity},
-      {"damping", {{"kind", kinds[static_cast<int>(s.damping.kind)]}, {"value", s.damping.value}}}};
 }
 
 json fit_json(const ParameterEstimate& p) {
@@ -71,33 +59,6 @@ std::optional<double> optional(const json& j, const std::string& name, const std
   return number(j, name, where);
 }
 
-Scene read_scene(const json& j, const std::string& where) {
-  Scene s;
-  s.name = field(j, "name", where).get<std::string>();
-  s.mass = number(j, "mass", where);
-  s.radius = number(j, "radius", where);
-  s.impactor_youngs_modulus = number(j, "impactor_youngs_modulus", where);
-  s.impactor_poisson_ratio = number(j, "impactor_poisson_ratio", where);
-  s.target_youngs_modulus =
-      optional(j, "target_youngs_modulus", where).value_or(std::numeric_limits<double>::infinity());
-  s.target_poisson_ratio = number(j, "target_poisson_ratio", where);
-  s.yield_strength = optional(j, "yield_strength", where);
-  s.target_radius = optional(j, "target_radius", where);
-  s.target_mass = optional(j, "target_mass", where);
-  s.velocity = number(j, "velocity", where);
-  const json& d = field(j, "damping", where);
-  const std::string kind = field(d, "kind", where + ".damping").get<std::string>();
-  const double value = number(d, "value", where + ".damping");
-  if (kind == "ratio")
-    s.damping = Damping::ratio(value);
-  else if (kind == "coefficient")
-    s.damping = Damping::coefficient(value);
-  else if (kind != "none")
-    throw InputError("--calibration", where + ".damping.kind must be none, ratio or coefficient");
-  validate(s);
-  return s;
-}
-
 }  // namespace
 
 json calibration_json(const CalibrationProblem& problem, const CalibrationResult& r) {
@@ -125,7 +86,9 @@ json calibration_json(const CalibrationProblem& problem, const CalibrationResult
             {"estimated_noise", r.estimated_noise},
             {"residuals", json::array()},
             {"data", {{"source", problem.data.source}, {"provenance", problem.data.provenance}}},
-            {"solver_report", r.solver_report}};
+            {"solver_report", r.solver_report},
+            {"notes", r.notes},
+            {"determined", r.determined}};
   for (const auto& [name, value] : m.request.parameters) j["parameters"][name] = value;
   for (const auto& p : r.parameters) j["fit"].push_back(fit_json(p));
   for (const auto& row : r.correlation) {
@@ -161,48 +124,174 @@ CalibratedModel calibrated_model(const CalibrationProblem& problem, const Calibr
   return m;
 }
 
+namespace {
+
+// A hand-edited calibration file is bad input where its covariance is not one. Tolerances:
+// the writer's matrix is symmetric and positive semi-definite to round-off (~1e-15 relative
+// of sqrt(C_ii C_jj) for the SVD pseudo-inverse, written with 17 digits); 1e-9 of that scale
+// leaves six orders of magnitude for round-off and catches any edit that moves a band.
+constexpr double kCovarianceRoundOff = 1e-9;
+
+std::string number_text(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+[[noreturn]] void bad(const std::string& where, const std::string& message) {
+  throw InputError("--calibration", where + ": " + message);
+}
+
+void check_shape(const CalibratedModel& m, const std::string& where) {
+  const std::size_t p = m.names.size();
+  if (p == 0) bad(where, "fit has no entries");
+  if (m.covariance.size() != p)
+    bad(where, "covariance must be " + std::to_string(p) + " x " + std::to_string(p) +
+                   " (one row per fit entry)");
+  for (const auto& row : m.covariance)
+    if (row.size() != p) bad(where, "covariance rows must have " + std::to_string(p) + " entries");
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (m.names[k] == m.names[i])
+        bad(where, "fit[" + std::to_string(i) + "] names '" + m.names[i] + "' again (fit[" +
+                       std::to_string(k) + "]): one entry per parameter");
+}
+
+// Variances >= 0 (> 0 when identifiable), zero rows for unidentifiable entries, symmetry,
+// |correlation| <= 1 and positive semi-definiteness, each named by entry.
+void check_covariance(const CalibratedModel& m, const std::string& where) {
+  const std::size_t p = m.names.size();
+  const auto& C = m.covariance;
+  auto entry = [&](std::size_t i, std::size_t k) {
+    return "covariance[" + std::to_string(i) + "][" + std::to_string(k) + "] (" + m.names[i] +
+           ", " + m.names[k] + ")";
+  };
+  for (std::size_t i = 0; i < p; ++i) {
+    if (!m.identifiable[i]) {
+      for (std::size_t k = 0; k < p; ++k)
+        if (C[i][k] != 0 || C[k][i] != 0)
+          bad(where, entry(i, k) + " is not 0, but fit[" + std::to_string(i) +
+                         "] is marked identifiable: false (held at its start, not drawn)");
+    } else if (!(C[i][i] > 0)) {
+      bad(where, entry(i, i) + " = " + number_text(C[i][i]) +
+                     ": the variance of an identifiable parameter must be > 0");
+    }
+  }
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t k = 0; k < i; ++k) {
+      const double scale = std::sqrt(C[i][i] * C[k][k]);
+      if (std::abs(C[i][k] - C[k][i]) > kCovarianceRoundOff * scale)
+        bad(where, entry(i, k) + " differs from " + entry(k, i) + ": a covariance is symmetric");
+      if (scale > 0 && std::abs(C[i][k]) > (1 + kCovarianceRoundOff) * scale)
+        bad(where, entry(i, k) + " gives a correlation of " + number_text(C[i][k] / scale) +
+                       ": must lie in [-1, 1]");
+    }
+  Eigen::MatrixXd R =
+      Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t k = 0; k < p; ++k)
+      if (m.identifiable[i] && m.identifiable[k])
+        R(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
+            C[i][k] / std::sqrt(C[i][i] * C[k][k]);
+  const double lowest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(R).eigenvalues().minCoeff();
+  if (lowest < -kCovarianceRoundOff)
+    bad(where,
+        "covariance is not positive semi-definite (its correlation matrix has the "
+        "eigenvalue " +
+            number_text(lowest) + "): no distribution has it");
+}
+
+// A request's InputError in the file's words: the command-line flags a request's checks name
+// (--force, --unload, --param NAME) are fields of the file here.
+std::string file_field(const InputError& x) {
+  const std::string& f = x.field();
+  std::string what = x.what();
+  std::string field = f;
+  if (f == "--force" || f == "--unload")
+    field = "expression." + f.substr(2);
+  else if (f.rfind("--param ", 0) == 0)
+    field = "parameters." + f.substr(8);
+  if (field != f && what.rfind(f, 0) == 0) what = field + what.substr(f.size());
+  return what;
+}
+
+// The law of the file: a built-in law by name, or the expression law.
+void read_law(const json& j, const std::string& where, CalibratedModel& m) {
+  const std::string kind = field(j, "law_kind", where).get<std::string>();
+  const json& e = field(j, "expression", where);
+  m.request.expression.force = field(e, "force", where + ".expression").get<std::string>();
+  m.request.expression.unload = field(e, "unload", where + ".expression").get<std::string>();
+  m.request.expression.allow_tension = field(e, "allow_tension", where + ".expression").get<bool>();
+  if (kind == "expression") {
+    m.request.law = LawKind::expression;
+    m.law = m.request.expression.force;  // as calibrate prints it
+  } else {
+    try {
+      m.request.law = parse_law(kind, "law_kind");
+    } catch (const InputError& x) {
+      bad(where, x.what());
+    }
+    m.request.expression = {};
+    m.law = kind;  // law_kind decides; "law" is a label an edit may leave behind
+  }
+  for (const auto& [name, value] : field(j, "parameters", where).items())
+    m.request.parameters[name] = value.get<double>();
+}
+
+void read_fit(const json& j, const std::string& where, CalibratedModel& m) {
+  const json& fit = field(j, "fit", where);
+  if (!fit.is_array()) bad(where, "fit must be an array");
+  for (std::size_t i = 0; i < fit.size(); ++i) {
+    const std::string at = where + ".fit[" + std::to_string(i) + "]";
+    m.names.push_back(field(fit[i], "name", at).get<std::string>());
+    m.identifiable.push_back(field(fit[i], "identifiable", at).get<bool>());
+    m.values.push_back(m.identifiable.back() ? number(fit[i], "value", at)
+                                             : number(fit[i], "start", at));
+  }
+  m.covariance = field(j, "covariance", where).get<std::vector<std::vector<double>>>();
+  const json& sigma = field(j, "sigma", where);
+  for (Quantity q : kQuantities)
+    m.sigma[static_cast<std::size_t>(q)] = optional(sigma, std::string(to_string(q)), where);
+}
+
+}  // namespace
+
 CalibratedModel read_calibration(const json& j, const std::string& where) {
   if (!j.is_object() || !j.contains("format") || j["format"] != "ivv-calibration-1")
-    throw InputError("--calibration",
-                     where +
-                         ": not an ivv calibration file (format "
-                         "\"ivv-calibration-1\", written by ivv calibrate --json)");
+    bad(where,
+        "not an ivv calibration file (format \"ivv-calibration-1\", written by ivv "
+        "calibrate --json)");
   CalibratedModel m;
   try {
-    m.request.scene = read_scene(field(j, "scene", where), where + ".scene");
-    m.request.law = parse_law(field(j, "law_kind", where).get<std::string>(), where + ".law_kind");
-    m.law = field(j, "law", where).get<std::string>();
-    const json& e = field(j, "expression", where);
-    m.request.expression.force = field(e, "force", where).get<std::string>();
-    m.request.expression.unload = field(e, "unload", where).get<std::string>();
-    m.request.expression.allow_tension = field(e, "allow_tension", where).get<bool>();
-    for (const auto& [name, value] : field(j, "parameters", where).items())
-      m.request.parameters[name] = value.get<double>();
-    for (const auto& p : field(j, "fit", where)) {
-      m.names.push_back(field(p, "name", where + ".fit").get<std::string>());
-      m.identifiable.push_back(field(p, "identifiable", where + ".fit").get<bool>());
-      m.values.push_back(m.identifiable.back() ? number(p, "value", where + ".fit")
-                                               : number(p, "start", where + ".fit"));
-    }
-    m.covariance = field(j, "covariance", where).get<std::vector<std::vector<double>>>();
-    const json& sigma = field(j, "sigma", where);
-    for (Quantity q : kQuantities)
-      m.sigma[static_cast<std::size_t>(q)] = optional(sigma, std::string(to_string(q)), where);
-  } catch (const json::exception& x) {
-    throw InputError("--calibration", where + ": a field has the wrong type (" + x.what() + ")");
+    m.request.scene = scene_from_json(field(j, "scene", where), "");
+  } catch (const InputError& x) {
+    if (x.field() == "--calibration") throw;
+    bad(where, std::string("scene.") + x.what());  // the scene's own field, not a flag
   }
-  const std::size_t p = m.names.size();
-  if (p == 0 || m.covariance.size() != p)
-    throw InputError("--calibration", where + ": covariance must be " + std::to_string(p) + " x " +
-                                          std::to_string(p) + " (one row per fit entry)");
-  for (const auto& row : m.covariance)
-    if (row.size() != p)
-      throw InputError("--calibration",
-                       where + ": covariance rows must have " + std::to_string(p) + " entries");
-  for (std::size_t i = 0; i < p; ++i) set_parameter(m.request, m.names[i], m.values[i]);
-  m.request.auto_integrator = true;
-  m.request.model = ModelKind::automatic;
-  validate(m.request);
+  try {
+    read_law(j, where, m);
+    read_fit(j, where, m);
+  } catch (const json::exception& x) {
+    bad(where, std::string("a field has the wrong type (") + x.what() + ")");
+  }
+  check_shape(m, where);
+  check_covariance(m, where);
+  try {
+    const auto fittable = fittable_parameters(m.request);
+    for (std::size_t i = 0; i < m.names.size(); ++i) {
+      if (std::find(fittable.begin(), fittable.end(), m.names[i]) == fittable.end())
+        bad(where, "fit[" + std::to_string(i) + "] names '" + m.names[i] +
+                       "', not a parameter of this scene and law");
+      set_parameter(m.request, m.names[i], m.values[i]);
+    }
+    m.request.auto_integrator = true;
+    m.request.model = ModelKind::automatic;
+    validate(m.request);
+  } catch (const InputError& x) {
+    if (x.field() == "--calibration") throw;
+    bad(where, "with the fitted values applied, " + file_field(x));
+  }
   return m;
 }
 

@@ -2,11 +2,12 @@
 // fitted model in full, so a prediction needs nothing else.
 //
 // JSON object, format "ivv-calibration-1":
-//   scene       every field of the Scene (SI units, velocity the scene's own v0; damping {kind:
-//   none|ratio|coefficient,
-//               value}), with the fitted values applied
-//   law         law name ("expression" for a typed law), expression {force, unload,
-//               allow_tension}, parameters {NAME: value} (--param, fitted values applied)
+//   scene       the scene in its one JSON form (scene/scene_json.h: every input, any dashpot
+//               kind or [structure], and the derived values), with the fitted values applied
+//   law         the law as calibrate printed it (the expression for a typed law); law_kind
+//               the law's name ("expression" for a typed law: it decides, an edited law is
+//               read as law_kind says), expression {force, unload, allow_tension},
+//               parameters {NAME: value} (--param, fitted values applied)
 //   fit         [{name, unit, start, value, standard_error, lower95, upper95, identifiable,
 //               at_bound, lower_bound, upper_bound, profile95 (or null)}] (value null when
 //               unidentifiable: the model file then carries the start value)
@@ -15,9 +16,15 @@
 //   chi2, dof, p_value (null when the noise was estimated), sigma {e, F_max, t_contact} (the
 //   estimated sigmas, null when stated), rtol, stated_error, unidentifiable [sentences],
 //   residuals [{v0, quantity, measured, model, uncertainty, normalised, line}],
-//   data {source, provenance [lines]}, solver_report
+//   data {source, provenance [lines]}, solver_report, notes [how the fit got there: a restart
+//   from the scan, a dashpot started from a scan, the profile intervals' cost], determined (the
+//   directions the data determine: the k of --compare)
 // Reading checks the format tag and every field it needs: InputError("--calibration", ...)
-// naming the field otherwise.
+// naming the field otherwise. A hand-edited file is bad input, naming the entry, when its
+// covariance is not one: a negative variance (or a zero one for an identifiable parameter),
+// an asymmetric matrix, |correlation| > 1, a matrix that is not positive semi-definite, a
+// non-zero row for an entry marked identifiable: false, or a parameter named twice or not
+// a parameter of the file's scene and law.
 #pragma once
 
 #include <filesystem>

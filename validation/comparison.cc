@@ -34,7 +34,7 @@ ModelRanking compare(std::vector<std::string> names, std::vector<CalibrationResu
       if (!c.models.empty() && c.models.front().fit.ok &&
           c.models.front().fit.points != m.fit.points)
         throw std::invalid_argument("compare: the fits are not of the same data");
-      for (const auto& p : m.fit.parameters) m.k += p.identifiable ? 1 : 0;
+      m.k = m.fit.determined;
       const double n = m.fit.points, dev = deviance(m.fit);
       m.aic = dev + 2.0 * m.k;
       m.bic = dev + m.k * std::log(n);

@@ -4,10 +4,12 @@
 // With stated standard uncertainties the Gaussian log-likelihood is -chi^2/2 up to a constant
 // shared by every model of the same data, so (Akaike 1974; Schwarz 1978)
 //     AIC = chi^2 + 2k,      BIC = chi^2 + k ln n,
-// k the number of identifiable fitted parameters, n the number of residuals. When the noise
-// was estimated from the residuals (no u_ columns), chi^2 is not a likelihood; the criteria use
-// the residual sum of squares of the unweighted residuals instead (Burnham & Anderson 2002,
-// eq. 2.2): AIC = n ln(RSS/n) + 2k, BIC = n ln(RSS/n) + k ln n (and a mixture of stated and
+// k the number of directions in parameter space the data determine (the rank of the fit's
+// Jacobian: p minus the unidentifiable directions, so a parameter without effect costs nothing
+// and two parameters only whose product is determined count once), n the number of residuals. When
+// the noise was estimated from the residuals (no u_ columns), chi^2 is not a likelihood; the
+// criteria use the residual sum of squares of the unweighted residuals instead (Burnham & Anderson
+// 2002, eq. 2.2): AIC = n ln(RSS/n) + 2k, BIC = n ln(RSS/n) + k ln n (and a mixture of stated and
 // estimated noise uses the stated-uncertainty form with the estimated sigmas).
 // Ranking: by AIC, lowest first; Delta = AIC - AIC_min. A model with Delta > 10 has
 // "essentially no support" against the best (Burnham & Anderson 2002, §2.6). A fit that failed
@@ -26,7 +28,7 @@ inline constexpr double kNoSupport = 10.0;  // Delta AIC beyond which a model ha
 struct RankedModel {
   std::string name;  // e.g. "elastoplastic", or the expression
   CalibrationResult fit;
-  int k = 0;  // identifiable parameters
+  int k = 0;  // determined directions (CalibrationResult::determined)
   double aic = 0.0, bic = 0.0;
   double delta_aic = 0.0;
   int rank = 0;  // 1 = best; 0 for a failed fit

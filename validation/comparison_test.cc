@@ -14,6 +14,7 @@ CalibrationResult fit(double chi2, int k, int n, bool ok = true) {
   r.failure = ok ? "" : "did not converge";
   r.chi2 = chi2;
   r.points = n;
+  r.determined = k;
   r.dof = n - k;
   r.p_value = 0.5;  // stated uncertainties: chi^2 is -2 ln L up to a shared constant
   for (int j = 0; j < k; ++j) r.parameters.emplace_back();
@@ -33,12 +34,17 @@ TEST(Comparison, RanksByAicWithBicBeside) {
   EXPECT_NE(c.table().find("fit failed"), std::string::npos);
 }
 
-TEST(Comparison, UnidentifiableParametersDoNotCount) {
+// k counts the directions the data determine: a parameter without effect costs nothing, and
+// two parameters of which only the product is determined (both named unidentifiable) count
+// once, not zero times (which ranked such a law without any penalty).
+TEST(Comparison, KIsTheNumberOfDeterminedDirections) {
   CalibrationResult r = fit(10.0, 2, 20);
   r.parameters[1].identifiable = false;
-  const ModelRanking c = compare({"x"}, {r});
-  EXPECT_EQ(c.models[0].k, 1);
-  EXPECT_DOUBLE_EQ(c.models[0].aic, 12.0);
+  r.determined = 1;
+  EXPECT_EQ(compare({"x"}, {r}).models[0].k, 1);
+  EXPECT_DOUBLE_EQ(compare({"x"}, {r}).models[0].aic, 12.0);
+  r.parameters[0].identifiable = false;  // only their combination is determined
+  EXPECT_EQ(compare({"x"}, {r}).models[0].k, 1);
 }
 
 TEST(Comparison, DifferentDataAreRefused) {

@@ -150,9 +150,31 @@ std::size_t MeasuredData::count(Quantity q) const {
   return n;
 }
 
-MeasuredData parse_measured_data(const std::string& text, const std::string& source) {
+namespace {
+
+// The text as lines end in it: a UTF-8 byte-order mark (Excel's "CSV UTF-8") dropped, and
+// CR LF (Windows) and a lone CR (classic Mac OS) read as LF, so that no '\r' reaches a cell or
+// a message and every line is counted.
+std::string normalised(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  const std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  for (std::size_t i = start; i < text.size(); ++i) {
+    if (text[i] != '\r') {
+      out += text[i];
+    } else if (i + 1 >= text.size() || text[i + 1] != '\n') {
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+MeasuredData parse_measured_data(const std::string& given, const std::string& source) {
   MeasuredData data;
   data.source = source;
+  const std::string text = normalised(given);
   std::istringstream in(text);
   std::string line;
   std::vector<ColumnRole> roles;
@@ -174,6 +196,12 @@ MeasuredData parse_measured_data(const std::string& text, const std::string& sou
   }
   if (roles.empty()) throw InputError(source, "no header line (expected e.g. 'v0,e,u_e')");
   if (data.points.empty()) throw InputError(source, "no data rows after the header");
+  // An optional column blank in every row measured nothing: it is an absent column (left
+  // present, the fit would count a quantity with no points and estimate its noise from none).
+  for (Quantity q : kQuantities) {
+    const auto qi = static_cast<std::size_t>(q);
+    if (data.count(q) == 0) data.has_quantity[qi] = data.has_uncertainty[qi] = false;
+  }
   return data;
 }
 

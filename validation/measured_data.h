@@ -13,6 +13,8 @@
 // carry provenance (who measured, how, or for synthetic data the generating command) and are
 // kept verbatim; blank lines are skipped. Cells may be blank only in an optional column (the
 // quantity was not measured at that impact); a blank u_ cell beside a given value is refused.
+// An optional column blank in every row is an absent column (has_quantity false). A UTF-8
+// byte-order mark is skipped; lines may end in LF, CR LF or CR.
 //
 // Failure: a malformed file throws InputError whose field is "FILE:LINE:COLUMN" (line counted from
 // 1 over the whole file, column the header's name) and whose message says what is accepted - the

@@ -34,6 +34,35 @@ TEST(MeasuredData, ReadsColumnsProvenanceAndBlankOptionalCells) {
   EXPECT_EQ(d.count(Quantity::F_max), 1u);
 }
 
+// A column blank in every row measured nothing: it is absent, so the fit neither counts the
+// quantity nor estimates a noise for it from no points (which changed the statistics of e).
+TEST(MeasuredData, AnAllBlankOptionalColumnIsAnAbsentColumn) {
+  const auto d = parse_measured_data(
+      "v0,e,u_e,F_max,u_F_max,t_contact\n0.5,0.9,0.01,,,\n1,0.8,0.01, , ,\n", "d.csv");
+  EXPECT_FALSE(d.has_quantity[static_cast<std::size_t>(Quantity::F_max)]);
+  EXPECT_FALSE(d.has_uncertainty[static_cast<std::size_t>(Quantity::F_max)]);
+  EXPECT_FALSE(d.has_quantity[static_cast<std::size_t>(Quantity::t_contact)]);
+  EXPECT_TRUE(d.has_quantity[0] && d.has_uncertainty[0]);
+  EXPECT_EQ(to_csv(d), "v0,e,u_e\n0.5,0.90000000000000002,0.01\n1,0.80000000000000004,0.01\n");
+}
+
+// Excel's "CSV UTF-8" begins with a byte-order mark; classic Mac line ends are a lone CR.
+TEST(MeasuredData, ReadsAByteOrderMarkAndEveryLineEnd) {
+  for (const std::string text :
+       {"\xEF\xBB\xBFv0,e\n1,0.8\n2,0.7\n", "v0,e\r1,0.8\r2,0.7\r", "v0,e\r\n1,0.8\r\n2,0.7\r\n"}) {
+    const auto d = parse_measured_data(text, "d.csv");
+    ASSERT_EQ(d.points.size(), 2u);
+    EXPECT_EQ(d.points[1].line, 3);
+  }
+  try {
+    parse_measured_data("v0,e\r1,x\r", "d.csv");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\r'), std::string::npos) << e.what();
+    EXPECT_EQ(e.field(), "d.csv:2:e");
+  }
+}
+
 TEST(MeasuredData, RoundTripsThroughCsv) {
   const auto d = parse_measured_data("# p\nv0,e,u_e\n0.5,0.9123456789012345,0.01\n", "d.csv");
   const auto again = parse_measured_data(to_csv(d), "d.csv");

@@ -9,7 +9,8 @@
 namespace ivv::validation {
 
 double calibration_rtol(double smallest_uncertainty) {
-  return std::clamp(kIntegrationShare * smallest_uncertainty / kStatedErrorFactor, 1e-13, 1e-8);
+  return std::clamp(kIntegrationShare * smallest_uncertainty / kStatedErrorFactor, kTightestRtol,
+                    1e-8);
 }
 
 std::vector<ModelPoint> run_model_points(const SimulationRequest& base,

@@ -31,6 +31,12 @@ inline constexpr double kIntegrationShare = 1e-5;
 inline constexpr double kRelativeStep = 1e-3;
 inline constexpr double kStatedErrorFactor = 300.0;  // stated error <= 300 rtol (implicit)
 inline constexpr double kDefaultSmallestUncertainty = 1e-3;
+inline constexpr double kTightestRtol = 1e-13;  // the clamp of the rule (double's round-off)
+// The smallest standard uncertainty for which the rule holds at the tightest rtol:
+// 300 * 1e-13 / 1e-5 = 3e-6 (in e; relative for F_max and t_contact). Below it the integration
+// error is no longer negligible against the data, and a fit would read it as signal.
+inline constexpr double kSmallestResolvableUncertainty =
+    kStatedErrorFactor * kTightestRtol / kIntegrationShare;
 
 // The rtol of the rule above for the smallest relative standard uncertainty of the data.
 double calibration_rtol(double smallest_uncertainty);

@@ -16,14 +16,20 @@ namespace ivv::validation {
 namespace {
 
 // The draws theta_s (identifiable parameters drawn, the others at their values), in a
-// sequence fixed by the seed whatever the thread count.
+// sequence fixed by the seed whatever the thread count. Drawn in ln theta, where the
+// calibration linearised (its J is d r / d ln theta): theta = theta_hat exp(L z), L from the
+// covariance of ln theta. Drawn in theta itself, a valley of the likelihood in which two
+// parameters trade off (c and S_y, correlation -0.99) was left along a straight line, and the
+// 95 % band covered the generating e in 81 of 100 data sets at 4 m/s
+// (validation.predict.band-coverage-100); a draw is also positive by construction.
 std::vector<std::vector<double>> draws(const CalibratedModel& m, const PredictionOptions& o,
                                        int& redrawn) {
   const auto p = static_cast<Eigen::Index>(m.names.size());
   Eigen::MatrixXd sigma(p, p);
   for (Eigen::Index i = 0; i < p; ++i)
     for (Eigen::Index j = 0; j < p; ++j)
-      sigma(i, j) = m.covariance[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+      sigma(i, j) = m.covariance[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] /
+                    (m.values[static_cast<std::size_t>(i)] * m.values[static_cast<std::size_t>(j)]);
   // LDLT: Sigma is only semi-definite when a parameter is held (zero row)
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(sigma);
   const Eigen::MatrixXd L = ldlt.transpositionsP().transpose() * Eigen::MatrixXd(ldlt.matrixL()) *
@@ -38,8 +44,10 @@ std::vector<std::vector<double>> draws(const CalibratedModel& m, const Predictio
     std::vector<double> theta(m.values);
     bool positive = true;
     for (Eigen::Index i = 0; i < p; ++i) {
-      theta[static_cast<std::size_t>(i)] += d(i);
-      positive = positive && theta[static_cast<std::size_t>(i)] > 0;
+      theta[static_cast<std::size_t>(i)] *= std::exp(d(i));
+      // exp(L z) under- or overflows only for a covariance of ln theta beyond any calibration
+      positive = positive && theta[static_cast<std::size_t>(i)] > 0 &&
+                 std::isfinite(theta[static_cast<std::size_t>(i)]);
     }
     if (!positive) {
       if (++redrawn > 10 * o.samples) break;  // the caller reports too few draws

@@ -1,12 +1,13 @@
 // Prediction with uncertainty and the ASME V&V 20 validation comparison (issue 19, item 2).
 //
-// Prediction band. theta ~ N(theta_hat, Sigma) over the identifiable fitted parameters
-// (Sigma the calibration's covariance; unidentifiable ones are held at their start values and
-// the prediction says so), drawn by theta = theta_hat + L z (L the Cholesky factor of Sigma,
-// z from validation/normal.h with the stated seed); a draw outside the parameter bounds
-// (e.g. a negative c) is redrawn and counted. Each draw runs every requested v0 (--model auto,
-// at rtol = 1e-10: stated error <= 3e-8 in e, far below any band the data allow), the draws
-// spread over the project's parallel loop (solver/parallel.h). Per v0:
+// Prediction band. ln theta ~ N(ln theta_hat, Sigma_ln) over the identifiable fitted
+// parameters (Sigma_ln,ij = Sigma_ij / (theta_i theta_j), Sigma the calibration's covariance,
+// linearised in ln theta as the calibration is; unidentifiable ones are held at their start
+// values and the prediction says so), drawn by theta = theta_hat exp(L z) (L the factor of
+// Sigma_ln, z from validation/normal.h with the stated seed): every draw is positive. Each draw
+// runs every requested v0 (--model auto, at rtol = 1e-10: stated error <= 3e-8 in e, far below any
+// band the data allow), the draws spread over the project's parallel loop (solver/parallel.h). Per
+// v0:
 //   e_nominal   the model at theta_hat
 //   e_lo, e_hi  the 2.5 % and 97.5 % quantiles of the draws (linear interpolation between
 //               order statistics): the 95 % band of the model prediction from the parameter
