@@ -1,0 +1,78 @@
+#include "solver/plate/plate_impact.h"
+
+#include <string>
+
+#include "scene/input_error.h"
+#include "solver/event_locator.h"
+#include "solver/plate/odeint_dense_stepper.h"
+#include "solver/plate/plate_impact_driver.h"
+#include "solver/plate/plate_modes.h"
+
+namespace ivv {
+namespace {
+
+void require_plate_scene(const Scene& scene, LawKind law) {
+  validate(scene);
+  if (scene.damping.kind != Damping::Kind::structure || !scene.damping.structure.finite_plate())
+    throw InputError("structure",
+                     "a finite plate impact needs [structure] kind = \"plate\" with length_x, "
+                     "length_y and edges");
+  if (scene.free_target())
+    throw InputError("target.mass", "a free target sphere and a finite plate are two targets");
+  const LawInfo& info = law_info(law);
+  if (law == LawKind::expression || info.rate_dependent)
+    throw InputError("--law", std::string(info.name) +
+                                  ": a rate-dependent or expression law is not modelled on a "
+                                  "finite plate yet; accepted: hertz, elastoplastic, linearized");
+  if (info.needs_yield_strength && !scene.yield_strength)
+    throw InputError("target.yield_strength", "required by the " + std::string(info.name) +
+                                                  " law; give yield_strength or shear_strength");
+}
+
+template <class Law>
+PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedParameters& p,
+                            const PlateImpactOptions& opt) {
+  const Scales k = scales(scene, p, Law::scale_basis);
+  const Structure& st = scene.damping.structure;
+  const FinitePlate plate =
+      finite_plate(st, scene.target_youngs_modulus, scene.target_poisson_ratio);
+  const PlateModes modes = plate_modes(plate, {opt.cutoff / k.time, opt.max_modes});
+  PlateImpactResult out;
+  out.mode_count = modes.modes.size();
+  out.omega_cut = modes.omega_cut;
+  out.static_compliance = modes.static_compliance.value;
+  out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
+  out.plate_mass = plate.mass();
+  try {
+    if constexpr (!Law::rate_dependent) {
+      using System = PlateSystem<Law>;
+      PlateImpactDriver<Law, OdeintDenseDopri5<System>> driver(law, k, modes, p.effective_mass,
+                                                               opt);
+      driver.run(out);
+    }
+  } catch (const PlateRunFailure& f) {
+    out.ok = false;
+    out.reason = f.reason;
+  } catch (const EventLocationError& e) {
+    out.ok = false;
+    out.reason = e.what();
+  } catch (const LawDomainError& e) {
+    out.ok = false;
+    out.reason = e.what();
+  }
+  return out;
+}
+
+}  // namespace
+
+PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
+                                        const LawParameters& parameters,
+                                        const PlateImpactOptions& options) {
+  require_plate_scene(scene, law);
+  validate_parameters(law, parameters);
+  const DerivedParameters p = derive(scene);
+  return with_builtin_law(law, parameters, p,
+                          [&](const auto& l) { return run_plate(l, scene, p, options); });
+}
+
+}  // namespace ivv
