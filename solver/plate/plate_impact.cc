@@ -1,5 +1,6 @@
 #include "solver/plate/plate_impact.h"
 
+#include <cmath>
 #include <string>
 
 #include "scene/input_error.h"
@@ -73,6 +74,53 @@ PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
   const DerivedParameters p = derive(scene);
   return with_builtin_law(law, parameters, p,
                           [&](const auto& l) { return run_plate(l, scene, p, options); });
+}
+
+bool has_finite_plate(const Scene& scene) {
+  return scene.damping.kind == Damping::Kind::structure && scene.damping.structure.finite_plate();
+}
+
+namespace {
+
+void refuse_for_plate(bool given, const char* flag, const char* why) {
+  if (given) throw InputError(flag, std::string("not used with a finite plate (") + why + ")");
+}
+
+}  // namespace
+
+PlateRun run_plate_simulation(const RequestOptions& o) {
+  const char* dashpot =
+      "its modes carry the energy away; without length_x/length_y the plate "
+      "is infinite and has the dashpot";
+  refuse_for_plate(o.zeta.has_value(), "--zeta", dashpot);
+  refuse_for_plate(o.c.has_value(), "--c", dashpot);
+  refuse_for_plate(o.lambda.has_value(), "--lambda", dashpot);
+  refuse_for_plate(o.no_dashpot, "--no-dashpot", dashpot);
+  const char* own = "the plate's modes are integrated by odeint-dopri5 with event location";
+  refuse_for_plate(o.integrator != "auto", "--integrator", own);
+  refuse_for_plate(o.dt.has_value(), "--dt", own);
+  refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);
+  refuse_for_plate(o.model != "auto" && o.model != "full", "--model",
+                   "the full plate model is the only one built for a finite plate");
+  refuse_for_plate(!o.expression.force.empty(), "--force",
+                   "an expression law is not modelled "
+                   "on a finite plate yet");
+  PlateRun run;
+  run.scene = load_scene(o.scene);
+  if (o.v0) {
+    require(std::isfinite(*o.v0) && *o.v0 > 0.0, "--v0", "a finite number > 0 m/s", *o.v0);
+    run.scene.velocity = *o.v0;
+  }
+  run.law = parse_law(o.law);
+  run.parameters = o.parameters;
+  if (o.rtol) run.options.rtol = *o.rtol;
+  if (o.atol) run.options.atol = *o.atol;
+  require(run.options.rtol > 0.0 && run.options.rtol < 1.0, "--rtol", "a number in (0, 1)",
+          run.options.rtol);
+  require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
+          run.options.atol);
+  run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
+  return run;
 }
 
 }  // namespace ivv

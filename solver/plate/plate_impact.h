@@ -51,6 +51,7 @@
 #include "scene/scene.h"
 #include "solver/law_parameters.h"
 #include "solver/law_registry.h"
+#include "solver/request_options.h"
 
 namespace ivv {
 
@@ -118,5 +119,22 @@ struct PlateImpactResult {
 PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
                                         const LawParameters& parameters,
                                         const PlateImpactOptions& options = {});
+
+// True when the scene's struck structure is a finite plate (its impact runs here).
+bool has_finite_plate(const Scene& scene);
+
+// A finite-plate impact as the command line asks for it: the scene with --v0, the law
+// (--law, --param), --rtol/--atol for the integration. Flags that describe a dashpot (--zeta,
+// --c, --lambda, --no-dashpot), an integrator other than auto, --dt, --max-steps, --model other
+// than auto/full and an expression law are refused by name (InputError): a finite plate has no
+// dashpot and runs its own integration.
+struct PlateRun {
+  Scene scene;
+  LawKind law = LawKind::elastoplastic;
+  LawParameters parameters;
+  PlateImpactOptions options;
+  PlateImpactResult result;
+};
+PlateRun run_plate_simulation(const RequestOptions& options);
 
 }  // namespace ivv

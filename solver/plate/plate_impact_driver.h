@@ -73,6 +73,11 @@ class PlateImpactDriver {
       if (!r.ok) throw PlateRunFailure{r.reason};
       if (!sys_.failure().empty()) throw PlateRunFailure{sys_.failure()};
       const std::optional<Root> hit = locate(t, x);
+      if (!hit && sys_.history.phase == Phase::unloading && System::z_kin(x) < zero_force_point())
+        throw PlateRunFailure{
+            "the force turned negative at t = " + std::to_string(t * scales_.time) +
+            " s without a located separation (a contact that began exactly "
+            "at its zero-force point)"};
       if (!hit) continue;
       if (*hit == Root::separation) break;
       on_event(*hit, x, c, out);

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numeric>
 #include <string>
 
@@ -124,6 +128,45 @@ TEST(PlateImpact, RefusesWhatItDoesNotModel) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "structure");
   }
+}
+
+// The command line's flags for a dashpot or another integrator are refused by name for a finite
+// plate (it has no dashpot and runs its own integration), and --v0 replaces the velocity.
+TEST(PlateImpact, CommandLineOptionsForAFinitePlate) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("ivv_plate_" + std::to_string(getpid()) + ".toml");
+  {
+    std::ofstream out(file);
+    out << "[impactor]\nmass = 0.004168\nradius = 0.005\nyoungs_modulus = 207e9\n"
+           "poisson_ratio = 0.3\n[target]\nyoungs_modulus = 207e9\npoisson_ratio = 0.3\n"
+           "[structure]\nkind = \"plate\"\nthickness = 0.001\ndensity = 7960\n"
+           "length_x = 0.05\nlength_y = 0.04\nedges = \"simply-supported\"\n"
+           "[impact]\nvelocity = 1.0\n";
+  }
+  auto field = [&](auto&& edit) {
+    RequestOptions o;
+    o.scene = file.string();
+    o.law = "hertz";
+    edit(o);
+    try {
+      run_plate_simulation(o);
+    } catch (const InputError& e) {
+      return e.field();
+    }
+    return std::string();
+  };
+  EXPECT_EQ(field([](RequestOptions& o) { o.zeta = 0.1; }), "--zeta");
+  EXPECT_EQ(field([](RequestOptions& o) { o.c = 100.0; }), "--c");
+  EXPECT_EQ(field([](RequestOptions& o) { o.integrator = "dop853"; }), "--integrator");
+  EXPECT_EQ(field([](RequestOptions& o) { o.v0 = -1.0; }), "--v0");
+  RequestOptions o;
+  o.scene = file.string();
+  o.law = "hertz";
+  o.v0 = 0.5;
+  const PlateRun run = run_plate_simulation(o);
+  EXPECT_EQ(run.scene.velocity, 0.5);
+  EXPECT_TRUE(run.result.ok) << run.result.reason;
+  std::filesystem::remove(file);
 }
 
 }  // namespace
