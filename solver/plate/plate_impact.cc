@@ -1,5 +1,6 @@
 #include "solver/plate/plate_impact.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -37,7 +38,12 @@ PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedPar
   const Structure& st = scene.damping.structure;
   const FinitePlate plate =
       finite_plate(st, scene.target_youngs_modulus, scene.target_poisson_ratio);
-  const PlateModes modes = plate_modes(plate, {opt.cutoff / k.time, opt.max_modes});
+  const double z_mH =
+      std::pow(5.0 * p.effective_mass * scene.velocity * scene.velocity / (4.0 * p.K_h), 0.4);
+  const double k_H = 1.5 * p.K_h * std::sqrt(z_mH);
+  const double omega_local = std::sqrt(k_H * 4.0 / (plate.mass()));
+  const double omega_s = std::max(1.0 / k.time, omega_local);
+  const PlateModes modes = plate_modes(plate, {opt.cutoff * omega_s, opt.max_modes});
   PlateImpactResult out;
   out.mode_count = modes.modes.size();
   out.omega_cut = modes.omega_cut;
