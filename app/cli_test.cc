@@ -137,7 +137,7 @@ TEST(Cli, BenchQuickJsonHasPointsPeersAndTargets) {
   EXPECT_TRUE(j["auto_grid"][0].contains("best_integrator"));
 }
 
-// A rigid target without a yield strength and the Hertz law: the Hertz closed form (SPEC §2)
+// A rigid target without a yield strength and the Hertz law: the Hertz closed form (docs/design.md §2)
 // z_m = (5 m v0^2/(4 K_h))^{2/5}, t_f = 2.9432752 z_m/v0, e = 1, with E* = E1/(1 - nu1^2).
 TEST(Cli, RigidTargetHertzGivesClosedForm) {
   const CliRun r = ivv("simulate --scene chung-ooi-2-aluminium --law hertz --json");

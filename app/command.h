@@ -2,7 +2,7 @@
 // declares its flags on the parser and runs when the user names it. A command parses and
 // prints; what it prints is computed by the libraries (solver, oracles, verification, reports).
 //
-// Exit codes (SPEC §5): 0 success; 1 a computation or a check failed (with the reason);
+// Exit codes (docs/design.md §5): 0 success; 1 a computation or a check failed (with the reason);
 // 2 bad input (the message names the field and the accepted range; InputError).
 #pragma once
 

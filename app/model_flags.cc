@@ -20,7 +20,7 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
                      bool scene_required) {
   auto* scene =
       cmd.add_option("--scene", f.scene,
-                     "scene file (TOML, SPEC §5), 'paper' (Table 1), or a shipped scene's name");
+                     "scene file (TOML, docs/design.md §5), 'paper' (Table 1), or a shipped scene's name");
   if (scene_required) scene->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");

@@ -1,4 +1,4 @@
-// ivv simulate: one impact, as a summary or as one JSON object (SPEC §5).
+// ivv simulate: one impact, as a summary or as one JSON object (docs/design.md §5).
 #include <iomanip>
 #include <iostream>
 

@@ -13,10 +13,10 @@
 namespace ivv::bench {
 namespace {
 
-// SPEC §1: with c = 11440 N s/m the paper scene has zeta ~ 0.1.
+// docs/design.md §1: with c = 11440 N s/m the paper scene has zeta ~ 0.1.
 constexpr double kPaperDashpot = 11440.0;  // [N s/m]
 constexpr double kPaperVelocity = 1.0;     // [m/s]
-constexpr double kStiffZeta = 1000.0;      // SPEC §6: the stiff end of the damping range
+constexpr double kStiffZeta = 1000.0;      // docs/design.md §6: the stiff end of the damping range
 
 SimulationRequest paper_request(IntegratorKind kind, Damping damping) {
   SimulationRequest req;

@@ -460,7 +460,7 @@ BenchReport run_bench(const BenchOptions& options,
                                         "thread; the per-point error check is the case "
                                         "autochoice.model"));
   }
-  say("bench: issue 20's targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
+  say("bench: the speed targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
   add_peer_ratio_targets(rep);
   add_map_targets(rep, options.quick);
   add_auto_integrator_target(rep, options.quick, timing);
@@ -557,7 +557,7 @@ std::string to_text(const BenchReport& r) {
          << ": auto (" << a.auto_integrator << ") " << std::setprecision(3) << a.auto_us
          << " us, best (" << a.best_integrator << ") " << a.best_us << " us, x" << a.ratio << "\n";
   }
-  os << "\ntargets (issue 8, part 5; issue 20):\n";
+  os << "\ntargets (speed against the peers, the map, the auto choice):\n";
   for (const auto& t : r.targets) {
     os << "  "
        << (std::isnan(t.measured) ? "n/a "

@@ -1,4 +1,4 @@
-// Hunt-Crossley impact, exact restitution (SPEC §2 "Hunt-Crossley, exact"; paper eq 27;
+// Hunt-Crossley impact, exact restitution (docs/design.md §2 "Hunt-Crossley, exact"; paper eq 27;
 // Hunt & Crossley, J. Appl. Mech. 42 (1975) 440; the Lambert-W closed form as in
 // Antypov & Elliott, EPL 94 (2011) 50004).
 //
@@ -21,7 +21,7 @@
 // log1pmx(-e u0) = log1pmx(u0) restores full precision. Large u0: e = (1 - s)/u0 with
 // s = -W0(...) exponentially small, so e -> 1/u0.
 //
-// Damping maps mu(e, v0) [s/m] in use (SPEC §3), each meant to deliver a target e:
+// Damping maps mu(e, v0) [s/m] in use (docs/design.md §3), each meant to deliver a target e:
 //   hunt-crossley (Hunt & Crossley 1975; Marhefka & Orin, IEEE SMC-A 29 (1999) 566):
 //                             3(1 - e)/(2 v0)
 //   lankarani-nikravesh (J. Mech. Des. 112 (1990) 369):  3(1 - e^2)/(4 v0)
@@ -68,7 +68,7 @@ struct HuntCrossleyImpact {
 
 HuntCrossleyImpact solve_hunt_crossley(const HuntCrossleyInput& in);
 
-// The seven damping maps of SPEC §3, mu [s/m] for a target e in (0, 1) and v0 > 0 [m/s].
+// The seven damping maps of docs/design.md §3, mu [s/m] for a target e in (0, 1) and v0 > 0 [m/s].
 double mu_hunt_crossley(double e, double v0);
 double mu_lankarani_nikravesh(double e, double v0);
 double mu_lee_wang(double e, double v0);

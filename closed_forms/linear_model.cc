@@ -156,6 +156,25 @@ LinearizedLawUndefined::LinearizedLawUndefined(double z_max, double z_min)
       z_max_(z_max),
       z_min_(z_min) {}
 
+namespace {
+// Loading. With z' = 0 at t_m, z_m = (v0/omega0) e^{-zeta omega0 t_m} in every regime
+// (underdamped: z = (v0/b) e^{-at} sin(bt) and sin(b t_m) = b/omega0; the over-damped and
+// critical forms reduce to the same expression).
+double loading_z_max(const LinearModelInput& in, double omega0, double t_max) {
+  return in.v0 / omega0 * std::exp(-in.zeta * omega0 * t_max);
+}
+double eq20_q(double mass, double K_h, double K_y, double v0);  // below, with eq 20
+}  // namespace
+
+bool linearized_law_defined(const LinearModelInput& in) {
+  validate(in);
+  const double omega0 = std::sqrt(in.K_y / in.mass);
+  const double z_max = loading_z_max(in, omega0, loading_peak_time(omega0, in.zeta));
+  // undamped, eq 20 asks the same question in its own rounding (q <= 1): both must agree
+  if (in.zeta == 0 && eq20_q(in.mass, in.K_h, in.K_y, in.v0) > 1.0) return false;
+  return !(z_max < (in.K_y / in.K_h) * (in.K_y / in.K_h));
+}
+
 LinearImpact solve_linear_model(const LinearModelInput& in) {
   validate(in);
   LinearImpact r;
@@ -163,11 +182,8 @@ LinearImpact solve_linear_model(const LinearModelInput& in) {
   const double zeta = in.zeta;
   const double v0 = in.v0;
 
-  // Loading. With z' = 0 at t_m, z_m = (v0/omega0) e^{-zeta omega0 t_m} in every regime
-  // (underdamped: z = (v0/b) e^{-at} sin(bt) and sin(b t_m) = b/omega0; the over-damped and
-  // critical forms reduce to the same expression).
   r.t_max = loading_peak_time(omega0, zeta);
-  r.z_max = v0 / omega0 * std::exp(-zeta * omega0 * r.t_max);
+  r.z_max = loading_z_max(in, omega0, r.t_max);
   r.F_max = in.K_y * r.z_max;
   r.alpha_dot_at_t_max = 2.0 * zeta * omega0 * r.z_max;  // F_max/c
 

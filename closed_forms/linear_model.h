@@ -1,7 +1,7 @@
 // Linearized (piecewise-linear) visco-elastoplastic impact model: closed-form solution.
 //
-// Source: the paper in /work/shared/paper, eqs 15-25 (SPEC §1 "linearized", §2 "Linear model,
-// closed form"). A sphere of mass m meets a spring in series with a dashpot c:
+// Source: the paper in /work/shared/paper, eqs 15-25 (docs/design.md §1 "linearized", §2 "Linear
+// model, closed form"). A sphere of mass m meets a spring in series with a dashpot c:
 //
 //   m alpha'' = -F,   c y' = F,   z = alpha - y,   alpha(0) = y(0) = 0, alpha'(0) = z'(0) = v0.
 //
@@ -32,7 +32,7 @@
 //   integral_0^t F dt = m (v0 - alpha'(t))  =>  y(t) = (m/c)(v0 - alpha'(t)),
 //   alpha' = z' + F/c,  m/c = 2 zeta/omega0.
 //
-// Energy ledger (SPEC §1): (1/2) m v0^2 = (1/2) m alpha'_f^2 + W_p + W_v with
+// Energy ledger (docs/design.md §1): (1/2) m v0^2 = (1/2) m alpha'_f^2 + W_p + W_v with
 //   W_p = closed loop integral F dz = (1/2) K_y z_m^2 (1 - gamma^2)   (loading triangle minus
 //         the unloading triangle (1/2)(K_y/gamma^2)(gamma^2 z_m)^2),
 //   W_v = integral F^2/c dt, by exact integration of the exponential-trigonometric solution
@@ -108,6 +108,9 @@ struct LinearImpact {
 // Throws ivv::InputError for a non-positive or non-finite input (zeta may be 0),
 // LinearizedLawUndefined when z_m < (K_y/K_h)^2.
 LinearImpact solve_linear_model(const LinearModelInput& in);
+// The question as a predicate: does the loading phase reach z_m >= (K_y/K_h)^2, where the
+// unloading law (eq 17) is defined? Throws ivv::InputError as solve_linear_model does.
+bool linearized_law_defined(const LinearModelInput& in);
 
 // The state of the closed-form solution at time t >= 0.
 // After separation F = 0: alpha' and y stay constant and z = alpha - y (free flight).
@@ -139,7 +142,7 @@ double linear_gamma_squared_eq20(double mass, double K_h, double K_y, double v0)
 // The next term makes eq 20 = (2/3) q (1 + q/6 + ...), so eq21/eq20 - 1 = -q/6 + O(q^2).
 double linear_gamma_squared_eq21(double mass, double K_h, double K_y, double v0);
 
-// Kelvin-Voigt (spring and dashpot in parallel, tension allowed), SPEC §3:
+// Kelvin-Voigt (spring and dashpot in parallel, tension allowed), docs/design.md §3:
 // e = exp(-pi zeta / sqrt(1 - zeta^2)) for 0 <= zeta < 1; for zeta >= 1 the deformation never
 // returns to zero, and the function returns 0 (capture).
 double linear_spring_dashpot_cor(double zeta);

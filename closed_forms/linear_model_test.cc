@@ -19,7 +19,7 @@ namespace {
 
 // Closed forms evaluated in double precision: tens of roundings of ~1.1e-16 each.
 constexpr double kRoundOff = 1e-13;
-// SPEC §1 / the brief: the energy ledger and the impulse close to 1e-12 relative.
+// docs/design.md §1 / the brief: the energy ledger and the impulse close to 1e-12 relative.
 constexpr double kLedgerTol = 1e-12;
 
 LinearModelInput paper_input(double v0, double zeta) {
@@ -31,7 +31,7 @@ LinearModelInput paper_input(double v0, double zeta) {
 }
 
 TEST(LinearModel, PaperDashpotGivesZetaOfOneTenth) {
-  // SPEC §1: with c = 11440 N s/m, zeta ~ 0.1. 11440 is given to four digits, so zeta is
+  // docs/design.md §1: with c = 11440 N s/m, zeta ~ 0.1. 11440 is given to four digits, so zeta is
   // 0.1 to within a unit of the fourth digit (5e-4 relative on c).
   constexpr double kFourDigits = 1e-4;
   const Scene s = paper_scene();
@@ -261,7 +261,7 @@ TEST(LinearModel, TrajectorySatisfiesTheEquationsOfMotion) {
 }
 
 TEST(LinearModel, RestitutionFallsWithDampingAndVelocity) {
-  // Paper Fig. 14 trend (SPEC §3), in the closed form.
+  // Paper Fig. 14 trend (docs/design.md §3), in the closed form.
   double previous = 1.0;
   for (double zeta : {0.0, 0.05, 0.1, 0.2, 0.3}) {
     const double e = solve_linear_model(paper_input(1.0, zeta)).e;
@@ -320,6 +320,28 @@ TEST(LinearModel, UndefinedBelowTwoAndAQuarterYieldDepths) {
   const LinearImpact edge = solve_linear_model(paper_input(v_edge * (1 + 1e-12), 0.0));
   EXPECT_NEAR(edge.e, 1.0, 1e-5);  // gamma^2 = 1 - (1 - q)^{2/3}, 1 - q ~ 5e-13
   EXPECT_THROW(solve_linear_model(paper_input(v_edge * (1 - 1e-9), 0.0)), LinearizedLawUndefined);
+}
+
+// The predicate answers what solve_linear_model would throw for, on both sides of the edge,
+// damped and undamped, and is never an exception itself.
+TEST(LinearModel, DefinedPredicateAgreesWithTheSolver) {
+  const LinearModelInput base = paper_input(1.0, 0.0);
+  const double v_edge =
+      std::sqrt(base.K_y / base.mass) * (base.K_y / base.K_h) * (base.K_y / base.K_h);
+  for (const double zeta : {0.0, 0.1, 0.5}) {
+    for (const double f : {0.5, 1 - 1e-9, 1 + 1e-9, 1.1, 2.0, 100.0}) {
+      const LinearModelInput in = paper_input(v_edge * f * (1 + 2 * zeta), zeta);
+      bool solved = true;
+      try {
+        solve_linear_model(in);
+      } catch (const LinearizedLawUndefined&) {
+        solved = false;
+      }
+      EXPECT_EQ(linearized_law_defined(in), solved) << "zeta " << zeta << " v0/v_edge " << f;
+    }
+  }
+  EXPECT_FALSE(linearized_law_defined(paper_input(0.1, 0.0)));
+  EXPECT_TRUE(linearized_law_defined(paper_input(1.0, 0.1)));
 }
 
 TEST(LinearModel, RejectsBadInput) {

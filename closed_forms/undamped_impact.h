@@ -1,4 +1,4 @@
-// The undamped impact in closed form (SPEC §2), fast enough to be a model route of
+// The undamped impact in closed form (docs/design.md §2), fast enough to be a model route of
 // `--model auto` (solver/model_choice.h, routes 1 and 2), SI units throughout.
 //
 //   Hertz:          z_m = (5 m v0^2/(4 K_h))^{2/5}, F_max = K_h z_m^{3/2},

@@ -1,4 +1,4 @@
-# The layer rule of SPEC §4, checked on the source tree (a ctest entry: layers_test):
+# The layer rule of docs/design.md §4, checked on the source tree (a ctest entry: layers_test):
 #
 #   scene < closed_forms < solver < oracles < validation < verification < reports < app
 #
@@ -40,6 +40,6 @@ endforeach()
 if(violations)
   list(LENGTH violations n)
   list(JOIN violations "\n  " text)
-  message(FATAL_ERROR "${n} include(s) against the layers of SPEC §4:\n  ${text}")
+  message(FATAL_ERROR "${n} include(s) against the layers of docs/design.md §4:\n  ${text}")
 endif()
 message(STATUS "layers: no include runs from a lower layer to a higher one")

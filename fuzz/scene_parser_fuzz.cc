@@ -1,5 +1,5 @@
 // Fuzz target: the scene TOML parser (scene/scene.h parse_scene_toml).
-// Contract under test (SPEC §7): any text is either a valid scene, whose derived parameters
+// Contract under test (docs/design.md §7): any text is either a valid scene, whose derived parameters
 // and scales are finite and positive, or an InputError naming a field; nothing else escapes.
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Undamped Hertz impact: closed form (SPEC §2 "Hertz, undamped"; Johnson, Contact Mechanics,
+// Undamped Hertz impact: closed form (docs/design.md §2 "Hertz, undamped"; Johnson, Contact Mechanics,
 // 1985, §11.1; paper eq 5).
 //
 //   m z'' = -K_h z^{3/2},  z(0) = 0, z'(0) = v0.

@@ -10,7 +10,7 @@
 namespace ivv::oracles {
 namespace {
 
-// SPEC §2 types the factor as 2.94327. The value is 2.9432752..., so the typed digits are
+// docs/design.md §2 types the factor as 2.94327. The value is 2.9432752..., so the typed digits are
 // truncated, not rounded (rounding gives 2.94328): the factor must lie in
 // [2.94327, 2.94327 + one unit of the sixth digit).
 constexpr double kTypedFactor = 2.94327;

@@ -1,4 +1,4 @@
-// Published restitution formulas (SPEC §3).
+// Published restitution formulas (docs/design.md §3).
 //
 // Thornton, "Coefficient of restitution for collinear collisions of elastic-perfectly plastic
 // spheres", J. Appl. Mech. 64 (1997) 383-386, with r = V_y/V_i (yield velocity over impact

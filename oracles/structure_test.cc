@@ -18,7 +18,7 @@ TEST(Zener, SlopeQuadratureMatchesBetaFunction) {
 }
 
 // The undamped contact time in Zener's units is the Hertz factor 2.9432752 times
-// z_m/z* = (5/4)^{2/5} (SPEC §2, Hertz undamped).
+// z_m/z* = (5/4)^{2/5} (docs/design.md §2, Hertz undamped).
 TEST(Zener, UndampedContactTimeIsTheHertzFactor) {
   EXPECT_NEAR(zener_undamped_contact_time(), 2.9432752 * std::pow(1.25, 0.4), 1e-6);
 }

@@ -1,5 +1,5 @@
 // Undamped elastoplastic impact (paper eqs 8-10, no dashpot): closed form by energy, contact
-// time by quadrature. Source: SPEC §2 "Undamped elastoplastic, closed form by energy";
+// time by quadrature. Source: docs/design.md §2 "Undamped elastoplastic, closed form by energy";
 // contact law of the paper (eqs 8-12), after Majeed, Yigit & Christoforou.
 //
 //   m z'' = -F(z, z_m),  z(0) = 0, z'(0) = v0, with

@@ -45,7 +45,7 @@ TEST(UndampedElastoplastic, BelowYieldIsHertz) {
 }
 
 TEST(UndampedElastoplastic, YieldVelocityIsTheHertzEnergyAtYield) {
-  // v_y = sqrt(4 K_h z_y^{5/2}/(5 m)) (SPEC §1) must equal the scene's derived v_yield.
+  // v_y = sqrt(4 K_h z_y^{5/2}/(5 m)) (docs/design.md §1) must equal the scene's derived v_yield.
   const ElastoplasticImpact r = solve_undamped_elastoplastic(paper_input(1.0));
   EXPECT_NEAR(r.v_yield / v_yield(), 1.0, kRoundOff);
 }
@@ -87,7 +87,7 @@ TEST(UndampedElastoplastic, EnergyLedgerCloses) {
 }
 
 TEST(UndampedElastoplastic, StableFormsEqualTheTextbookFormsAtModerateVelocity) {
-  // At 10 v_y neither form suffers cancellation, so the naive SPEC formulas
+  // At 10 v_y neither form suffers cancellation, so the naive formulas of docs/design.md §2
   // z_f = (z_m^{3/2} - F_m/K_h)^{2/3} and W_u = (2/5)K_h(z_m^{5/2} - z_f^{5/2})
   // - (K_h z_m^{3/2} - F_m)(z_m - z_f) must agree with the factorised ones.
   // The naive z_f loses ~z_m^{3/2}/z_f^{3/2} ~ 10 of its digits' worth; allow 1e-12.
@@ -118,11 +118,11 @@ double local_slope(double v0) {
 }
 
 TEST(UndampedElastoplastic, HighVelocitySlopeTendsToMinusOneQuarter) {
-  // Johnson (1985) ch. 11 and paper eq 21: e ~ v0^{-1/4} at high velocity. SPEC §3: assert
+  // Johnson (1985) ch. 11 and paper eq 21: e ~ v0^{-1/4} at high velocity. docs/design.md §3: assert
   // the limit where it holds (within 0.005 at 1e4 v_y), not just above yield.
   constexpr double kSlopeTolerance = 0.005;
   EXPECT_NEAR(local_slope(1e4 * v_yield()), -0.25, kSlopeTolerance);
-  // ... and the approach is from below: SPEC quotes about -0.257 near 15 v_y, steeper than
+  // ... and the approach is from below: docs/design.md §3 quotes about -0.257 near 15 v_y, steeper than
   // the limit; 0.002 covers "about" at three printed digits.
   constexpr double kQuotedTolerance = 0.002;
   EXPECT_NEAR(local_slope(15.0 * v_yield()), -0.257, kQuotedTolerance);

@@ -2,7 +2,7 @@
 // the undamped Hertz solution. No ODE integration.
 //
 // Model (C. Zener, "The intrinsic inelasticity of large plates", Phys. Rev. 59 (1941) 669-673;
-// SPEC §1): Hertz spring K_h z^{3/2} in series with the dashpot c of the plate; in
+// docs/design.md §1): Hertz spring K_h z^{3/2} in series with the dashpot c of the plate; in
 // sigma = z/z*, z* = (m v0^2/K_h)^{2/5}, tau = t v0/z*, lambda = m^{3/5} K_h^{2/5} v0^{1/5}/c:
 //     sigma'' + lambda (sigma^{3/2})' + sigma^{3/2} = 0,  sigma(0) = 0, sigma'(0) = 1.
 //

@@ -2,7 +2,7 @@
 // Matter 13:643-656, normal-impact Tests 1 and 2 (reference_data/chung_ooi_2011.md).
 //
 // One table of the shipped scenes (reference_data/scenes/chung-ooi-*.toml) with their
-// effective radius and mass and the Hertz closed form they are checked against (SPEC §2,
+// effective radius and mass and the Hertz closed form they are checked against (docs/design.md §2,
 // oracles/hertz.h), and one table of the verification cases dem.<scene>.<integrator> that were
 // run: largest error against that closed form per scene and integrator, and the verdict. The
 // cases themselves are the registry's (verification/cases_dem.cc); nothing is rerun here.

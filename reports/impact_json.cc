@@ -113,6 +113,7 @@ nlohmann::json result_json(const ImpactResult& r) {
       {"events", events},
   };
   if (!r.reason.empty()) j["reason"] = r.reason;
+  if (r.failure != FailureKind::none) j["failure"] = to_string(r.failure);
   if (r.status == ImpactStatus::captured) {
     // the end state (solver/capture_end_state.h): the contact never ends, so t_contact (and
     // t_alpha_max when the impactor never turned back) is infinite, null here; when capture
@@ -154,7 +155,7 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
   if (traits(req.integrator).fixed_step) request["dt"] = req.options.fixed_dt();
   const nlohmann::json law = law_json(req);  // named: items() of a temporary would dangle
   for (const auto& [key, value] : law.items()) request[key] = value;
-  if (req.law == LawKind::hunt_crossley) {  // the names of the contract (SPEC §5)
+  if (req.law == LawKind::hunt_crossley) {  // the names of the contract (docs/design.md §5)
     request["hc_k"] = request["parameters"]["K"];
     request["hc_mu"] = request["parameters"]["mu"];
   }

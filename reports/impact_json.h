@@ -1,5 +1,5 @@
 // JSON views of scenes and impact results: the one writer of the `ivv simulate --json` contract
-// (SPEC §5), used by every front end that prints an impact.
+// (docs/design.md §5), used by every front end that prints an impact.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -61,6 +61,7 @@ std::string impact_summary(const SimulationRun& run) {
   if (p.has_dashpot() && req.law == LawKind::hertz)
     out << "  Zener's lambda = m*^(3/5) K_h^(2/5) v0^(1/5) / c = " << p.zener_lambda << "\n";
   out << "  status       " << to_string(r.status);
+  if (r.failure != FailureKind::none) out << " (" << to_string(r.failure) << ")";
   if (!r.reason.empty()) out << ": " << r.reason;
   out << "\n";
   if (r.ok()) outcome_lines(out, req, r, p);

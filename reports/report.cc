@@ -374,14 +374,14 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
       "<h3 id=\"example-thornton\">Thornton (1997), elastic-perfectly-plastic (C++)</h3>\n" +
       law_section_html(thornton.report, "examples-thornton",
                        "<p>Source: <code>examples/laws/thornton.h</code>; claimed COR: "
-                       "Thornton's closed form (SPEC §3).</p>\n",
+                       "Thornton's closed form (docs/design.md §3).</p>\n",
                        place("examples.thornton.*"), Source::from_cases({"examples.thornton.*"}));
   so.say("worked examples: Kuwabara-Kono");
   const ExampleRun& kk = verification::kuwabara_kono_example();
   out += "<h3 id=\"example-kuwabara-kono\">Kuwabara-Kono viscoelastic Hertz (C++)</h3>\n" +
          law_section_html(kk.report, "examples-kuwabara-kono",
                           "<p>Source: <code>examples/laws/kuwabara_kono.h</code>; claimed COR: "
-                          "the Muller-Poschel Pade form (SPEC §3).</p>\n",
+                          "the Muller-Poschel Pade form (docs/design.md §3).</p>\n",
                           place("examples.kuwabara-kono.*"),
                           Source::from_cases({"examples.kuwabara-kono.*"}));
   so.say("worked examples: Kelvin-Voigt");
@@ -434,7 +434,7 @@ std::string restitution_html(const SectionOptions& so, FigureBook& book) {
   const RestitutionSection r = restitution_section(so);
   std::string out =
       "<p>Restitution of the elastoplastic law against the published trends "
-      "(SPEC §3).</p>\n";
+      "(docs/design.md §3).</p>\n";
   out += book.add(r.figures.at(0));
   std::string t =
       table_open(Source::from_cases({"trend.cor-undamped-simulated-is-closed-form",
@@ -549,7 +549,7 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
 
   out +=
       "<h3>Hard cases</h3>\n<p>Each integrator with its defaults (rtol 1e-10; rk4 dt = 1e-3 "
-      "in τ) on the hard scenes of SPEC §6: status, e, accepted steps and the wall time of "
+      "in τ) on the hard scenes of docs/design.md §6: status, e, accepted steps and the wall time of "
       "the one run (information only: measured while other cases may run on other threads, "
       "never judged). A solver that cannot meet its tolerance must say so (status failed), "
       "never return a silently wrong COR.</p>\n";

@@ -1,4 +1,4 @@
-// The HTML verification report (SPEC §4, "ivv report"): one self-contained DIR/index.html
+// The HTML verification report (docs/design.md §4, "ivv report"): one self-contained DIR/index.html
 // (no script, no network, no external file; plots are inline SVG drawn by gnuplot; a print
 // style sheet) with, in order:
 //   1. Summary: overall verdict, counts per tier, failing cases first, provenance.

@@ -34,7 +34,8 @@ Figure zener_figure(const verification::StructureStudy& st) {
       "Zener's problem: the Hertz law in series with the dashpot of a large plate; e depends on "
       "lambda alone. Curve: 41 simulated impacts; dashed: the first-order loss 1 &minus; a&lambda; "
       "from the undamped Hertz impact; points: four scenes with different m, R, E*, h, &rho; and "
-      "v<sub>0</sub> at the same lambda, and the three values quoted in issue 18. Beyond lambda "
+      "v<sub>0</sub> at the same lambda, and three values quoted to 5 decimals by a review of ivv "
+      "(not traced to a publication). Beyond lambda "
       "&asymp; 5 the plate nearly captures the sphere (e &lt; 1e-4).";
   f.full_width = true;
   f.source = Source::from_cases({"structure.zener.*"});

@@ -1,4 +1,4 @@
-// Bad input: one error type for every user-facing validation failure (SPEC §7).
+// Bad input: one error type for every user-facing validation failure (docs/design.md §7).
 //
 // An InputError names the field at fault and says what is accepted. The command line maps it
 // to exit code 2 with the message on stderr and writes no output file.

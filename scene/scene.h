@@ -10,7 +10,7 @@
 // yield strength S_y is optional: only laws that model yield need it (elastoplastic,
 // linearized); Hertz and Hunt-Crossley do not.
 //
-// Derived parameters (paper eqs 6, 7, 11, 12, 23; SPEC §1):
+// Derived parameters (paper eqs 6, 7, 11, 12, 23; docs/design.md §1):
 //   R*    = R1 R2/(R1 + R2)  (R1 for a half-space)      [m]        effective radius
 //   m*    = m1 m2/(m1 + m2)  (m1 for a fixed target)    [kg]       effective mass
 //   1/E*  = (1 - nu1^2)/E1 + (1 - nu2^2)/E2            [Pa]       (second term 0 if E2 = inf)
@@ -162,7 +162,7 @@ BodyVelocities body_velocities_after(const Scene& scene, double relative_velocit
 // v0 = 1 m/s. With c = 11440 N s/m the damping ratio is 0.1.
 Scene paper_scene();
 
-// Reads a TOML scene (schema in SPEC §5). Throws InputError for a missing or unreadable
+// Reads a TOML scene (schema in docs/design.md §5). Throws InputError for a missing or unreadable
 // file, a TOML syntax error (with line), an unknown key, a missing or out-of-range field.
 Scene load_scene_file(const std::filesystem::path& path);
 // The text of a scene file, at most kMaxSceneFileBytes; InputError("--scene") for a directory,

@@ -29,7 +29,7 @@
 //     lambda = m^{3/5} K_h^{2/5} v0^{1/5} / c                               [-]
 // With z* = (m v0^2/K_h)^{2/5} [m], sigma = z/z*, tau = t v0/z*, the impactor displacement
 // a = alpha/z*, the equations m alpha'' = -F, c y' = F become a'' = -sigma^{3/2},
-// y' = lambda sigma^{3/2}: e depends on lambda alone (SPEC §1).
+// y' = lambda sigma^{3/2}: e depends on lambda alone (docs/design.md §1).
 //
 // A finite plate (SPEC §1 "A finite plate"): with length_x = a and length_y = b the plate is a
 // Kirchhoff plate a x b, simply supported on its four edges, struck at (impact_x, impact_y)

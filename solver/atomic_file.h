@@ -1,4 +1,4 @@
-// Output files appear whole or not at all (SPEC §7): content is written to a temporary file
+// Output files appear whole or not at all (docs/design.md §7): content is written to a temporary file
 // in the destination's directory and renamed over the destination (rename is atomic on POSIX
 // within one file system). On any error the temporary is removed and InputError/runtime_error
 // is thrown, leaving no partial file.

@@ -1,7 +1,7 @@
 // The end state of a captured impact (no rebound): what the impact comes to as t -> inf,
 // computed from conservation laws, not sampled when capture was declared.
 //
-// Model (paper eqs 1-4; SPEC §1): m* alpha'' = -F, c y' = F, z = alpha - y. Capture: the
+// Model (paper eqs 1-4; docs/design.md §1): m* alpha'' = -F, c y' = F, z = alpha - y. Capture: the
 // impactor never turns back (e = 0, exactly or within ImpactResult::e_bound); the spring
 // relaxes towards its permanent set z_f along the unloading curve while the relative velocity
 // alpha' decays to 0. Two invariants of the exact flow give the limit in closed form:

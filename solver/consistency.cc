@@ -87,7 +87,7 @@ bool fail_non_finite_outcome(ImpactResult& r, std::string_view what) {
     os << what << ": the run ended " << to_string(r.status) << " but its " << name
        << " is not a finite number; the result is not reported as valid";
     r.status = ImpactStatus::failed;
-    r.failure = FailureKind::integrator;
+    r.failure = FailureKind::inconsistent;
     r.reason = os.str();
     return true;
   }

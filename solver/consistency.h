@@ -1,6 +1,6 @@
 // Post-run consistency check of one impact: the three restitution coefficients and the energy
 // ledger must agree to within what the integrator's tolerance allows, or the run is a failure
-// with a reason (SPEC §6: a solver that cannot meet its tolerance says so).
+// with a reason (docs/design.md §6: a solver that cannot meet its tolerance says so).
 //
 // Why these quantities. In the normalised variables of impact_system.h the state and its
 // quadratures are O(1): w in [-1, 1], J = int F dtau in [0, 2], Wa = int F w dtau in [0, 1/2].

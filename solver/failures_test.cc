@@ -20,7 +20,7 @@ namespace {
 // unloading branch (a difference of terms sqrt(z_m/z_y) ~ 1e8 times E0) drove the capture
 // bound below 1e-9. Without a dashpot nothing dissipates after maximum compression: the run
 // must separate, or fail with a reason, never be captured.
-TEST(Issue10, NoCaptureWithoutADashpot) {
+TEST(RunFailures, NoCaptureWithoutADashpot) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.scene.velocity = 1e16;
@@ -47,7 +47,7 @@ TEST(Issue10, NoCaptureWithoutADashpot) {
 // R = 0.1 um, v0 = 1000 m/s) but not the unloading, which is (z_m/z_y)^{1/4} ~ 300 times
 // faster: e came out 8 % low with status "separated". The CORs disagree far beyond the
 // tolerance: a failure with the reason.
-TEST(Issue10, CoarseRk4UnloadingIsAFailureWithAReason) {
+TEST(RunFailures, CoarseRk4UnloadingIsAFailureWithAReason) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.scene.mass = 1000.0;
@@ -56,6 +56,7 @@ TEST(Issue10, CoarseRk4UnloadingIsAFailureWithAReason) {
   req.integrator = IntegratorKind::rk4;
   const ImpactResult r = simulate(req);
   EXPECT_EQ(r.status, ImpactStatus::failed) << "e = " << r.e;
+  EXPECT_EQ(r.failure, FailureKind::inconsistent) << to_string(r.failure);
   EXPECT_NE(r.reason.find("rk4"), std::string::npos) << r.reason;
   EXPECT_NE(r.reason.find("bound"), std::string::npos) << r.reason;
   // two adaptive integrators meet their tolerance here, pass the same check and agree
@@ -71,7 +72,7 @@ TEST(Issue10, CoarseRk4UnloadingIsAFailureWithAReason) {
       << "rk4 was right after all: the test proves nothing";
 }
 
-TEST(Issue10, ConsistencyCheckNamesWhatDisagreed) {
+TEST(RunFailures, ConsistencyCheckNamesWhatDisagreed) {
   IntegratorOptions opt;
   ConsistencyMeasures m;
   m.has_restitution = true;
@@ -92,7 +93,7 @@ TEST(Issue10, ConsistencyCheckNamesWhatDisagreed) {
 // Item 5: near the capture boundary the force reaches zero while the impactor still
 // approaches at +1e-13 v0, within the integration error: that is capture (e = 0) with the
 // bound, not a failure.
-TEST(Issue10, GrazingCaptureIsCapture) {
+TEST(RunFailures, GrazingCaptureIsCapture) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.scene.velocity = 2.8923076923076927;
@@ -120,7 +121,7 @@ TEST(Issue10, GrazingCaptureIsCapture) {
 }
 
 // Item 7: TOMS 748 out of iterations was never checked.
-TEST(Issue10, RootFinderOutOfIterationsFailsTheRun) {
+TEST(RunFailures, RootFinderOutOfIterationsFailsTheRun) {
   for (IntegratorKind k : {IntegratorKind::odeint_dopri5, IntegratorKind::gsl_rk8pd}) {
     SimulationRequest req;
     req.scene = paper_scene();
@@ -128,12 +129,13 @@ TEST(Issue10, RootFinderOutOfIterationsFailsTheRun) {
     req.options.locator.max_iterations = 1;
     const ImpactResult r = simulate(req);
     EXPECT_EQ(r.status, ImpactStatus::failed) << to_string(k);
+    EXPECT_EQ(r.failure, FailureKind::event_location) << to_string(r.failure);
     EXPECT_NE(r.reason.find("TOMS 748"), std::string::npos) << r.reason;
   }
 }
 
 // Item 7: a failed result always carries a reason (an unknown integrator returned {}).
-TEST(Issue10, FailedSimulationAlwaysHasAReason) {
+TEST(RunFailures, FailedSimulationAlwaysHasAReason) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.integrator = static_cast<IntegratorKind>(99);
@@ -145,7 +147,7 @@ TEST(Issue10, FailedSimulationAlwaysHasAReason) {
 
 // Item 7: the field of a bad option used to be cut from the message at its first space
 // ("max_steps" for a flag spelled --max-steps).
-TEST(Issue10, InvalidOptionNamesItsFlagAndRange) {
+TEST(RunFailures, InvalidOptionNamesItsFlagAndRange) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.options.max_steps = 0;
@@ -189,7 +191,7 @@ struct CubeRootStepper {
   }
 };
 
-TEST(Issue10, UnconvergedHermiteRefinementIsNamed) {
+TEST(RunFailures, UnconvergedHermiteRefinementIsNamed) {
   CubeRootStepper stepper;
   OneState sys;
   OneState::state_type xe{};
@@ -233,11 +235,37 @@ void expect_restep_failure_reported() {
   EXPECT_NE(r.reason.find("re-stepping"), std::string::npos) << r.reason;
 }
 
-TEST(Issue10, GslRk8pdRestepFailureIsReported) {
+TEST(RunFailures, GslRk8pdRestepFailureIsReported) {
   expect_restep_failure_reported<GslMethod::rk8pd>();
 }
-TEST(Issue10, GslMsbdfRestepFailureIsReported) {
+TEST(RunFailures, GslMsbdfRestepFailureIsReported) {
   expect_restep_failure_reported<GslMethod::msbdf>();
+}
+
+}  // namespace
+}  // namespace ivv
+
+namespace ivv {
+namespace {
+
+// The limits of a run are codes, not only words: max_steps and tau_max, for an integrator
+// written here and one from a library (the driver owns both limits).
+TEST(RunFailures, StepAndTimeLimitsCarryTheirCodes) {
+  for (IntegratorKind k : {IntegratorKind::dop853, IntegratorKind::odeint_dopri5}) {
+    SimulationRequest req;
+    req.scene = paper_scene();
+    req.integrator = k;
+    req.options.max_steps = 3;
+    const ImpactResult steps = simulate(req);
+    EXPECT_EQ(steps.failure, FailureKind::step_limit) << to_string(k) << ": " << steps.reason;
+    EXPECT_TRUE(is_integrator_failure(steps.failure));
+    req.options.max_steps = 1'000'000;
+    req.options.tau_max = 1e-3;
+    const ImpactResult time = simulate(req);
+    EXPECT_EQ(time.failure, FailureKind::time_limit) << to_string(k) << ": " << time.reason;
+  }
+  EXPECT_FALSE(is_integrator_failure(FailureKind::law_domain));
+  EXPECT_EQ(to_string(FailureKind::step_limit), "step_limit");
 }
 
 }  // namespace

@@ -222,7 +222,7 @@ class ImpactDriver {
     try {
       return phases();
     } catch (const EventLocationError& err) {  // a root finder out of iterations
-      return fail(FailureKind::integrator, std::string(Stepper::name) + ": " + err.what());
+      return fail(FailureKind::event_location, std::string(Stepper::name) + ": " + err.what());
     }
   }
 
@@ -230,7 +230,7 @@ class ImpactDriver {
   // The phase loop; EventLocationError from the locator or the refinement propagates to run().
   NormalisedRun<System> phases() {
     for (;;) {
-      if (!resume_ && !advance()) return fail(FailureKind::integrator, std::move(failure_));
+      if (!resume_ && !advance()) return fail(failure_kind_, std::move(failure_));
       resume_ = false;
       const T t0 = scan_t0_, t1 = stepper_.t1();
       const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
@@ -245,7 +245,7 @@ class ImpactDriver {
       T te = *earliest.t;
       state_type xe;
       if (std::optional<std::string> why = event_state(active, earliest.first, te, xe))
-        return fail(FailureKind::integrator, std::move(*why));
+        return fail(FailureKind::event_refinement, std::move(*why));
       if (retake_to_separation(active.kinds[earliest.first], te, xe)) continue;
       emit_samples(t0, te);
       const Fired fired = fire(active, earliest, te, xe);
@@ -401,17 +401,20 @@ class ImpactDriver {
       else
         os << "; raise --max-steps or loosen --rtol";
       failure_ = os.str();
+      failure_kind_ = FailureKind::step_limit;
       return false;
     }
     if (stepper_.t1() > opt_.tau_max) {
       std::ostringstream os;
       os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
       failure_ = os.str();
+      failure_kind_ = FailureKind::time_limit;
       return false;
     }
     const StepResult step = stepper_.step(sys_);
     if (!step.ok) {
       failure_ = step.reason;
+      failure_kind_ = failure_of_step(step.code);
       return false;
     }
     scan_t0_ = stepper_.t0();
@@ -538,7 +541,7 @@ class ImpactDriver {
        << " with the impactor still approaching (alpha_dot = +" << w
        << " v0): the integration error exceeds the remaining force; tighten --rtol or use "
           "another integrator";
-    return fail(FailureKind::integrator, os.str());
+    return fail(FailureKind::still_approaching, os.str());
   }
 
   void emit_samples(T a, T b) {
@@ -577,7 +580,7 @@ class ImpactDriver {
       std::string why = consistency_failure(consistency_measures(run_, sys_), opt_, Stepper::name);
       if (!why.empty()) {
         run_.status = ImpactStatus::failed;
-        run_.failure = FailureKind::integrator;
+        run_.failure = FailureKind::inconsistent;
         run_.reason = std::move(why);
       }
     }
@@ -595,8 +598,9 @@ class ImpactDriver {
   // the scan of the current step starts at (scan_t0_, scan_x0_).
   bool resume_ = false;
   RootsAtEnd roots_at_end_;
-  int separation_retakes_ = 0;  // retake_to_separation() so far
-  std::string failure_;         // why advance() could not take a step
+  int separation_retakes_ = 0;                          // retake_to_separation() so far
+  std::string failure_;                                 // why advance() could not take a step
+  FailureKind failure_kind_ = FailureKind::integrator;  // and its code
   T scan_t0_ = 0;
   state_type scan_x0_{};
 };

@@ -1,5 +1,5 @@
 // The events of one impact as data: a root function g(x) of the normalised state
-// (impact_system.h), a direction, and what the event means to the driver (SPEC §1). The
+// (impact_system.h), a direction, and what the event means to the driver (docs/design.md §1). The
 // driver (impact_driver.h) hands the active roots to the shared locator (event_locator.h:
 // locate_earliest), which knows roots and directions only, and acts on the rows' meanings.
 //

@@ -10,7 +10,7 @@ namespace ivv {
 namespace {
 
 // Undamped maximum compression [m] of the elastoplastic (and, below yield, Hertz) curve, by
-// energy (SPEC §2): an upper bound on z_m with a dashpot.
+// energy (docs/design.md §2): an upper bound on z_m with a dashpot.
 double undamped_z_max(const Scene& s, const DerivedParameters& p) {
   const double E0 = 0.5 * p.effective_mass * s.velocity * s.velocity;
   const double sqrt_zy = std::sqrt(p.z_y);

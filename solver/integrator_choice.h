@@ -4,7 +4,7 @@
 // rodas4 (the hand-written RODAS4 of solver/steppers/rodas.h: Rosenbrock 4(3), L-stable, dense
 // output; 4x faster than odeint-rosenbrock4 with the same steps and errors).
 //
-// Cost model (SI units; z_m,u the undamped maximum compression by energy, SPEC §2):
+// Cost model (SI units; z_m,u the undamped maximum compression by energy, docs/design.md §2):
 //  * Damped maximum compression. A dashpot moving at most at v0 carries at most c v0, so the
 //    spring compresses only to where the loading curve reaches that force:
 //      z_m = min(z_m,u, F_load^{-1}(c v0))     (Hertz below the yield force, K_y above),

@@ -26,12 +26,11 @@ constexpr LawInfo row(LawKind kind) {
           std::span<const ParameterSpec>(Law::parameters)};
 }
 
-// LawKind follows BuiltinLaws' order; a mismatch is a compile error here.
+// LawKind follows BuiltinLaws' order: entry I states (its member `kind`) that it is LawKind
+// number I; a mismatch is a compile error here.
 template <std::size_t... I>
 constexpr bool kinds_follow_the_tuple(std::index_sequence<I...>) {
-  return ((std::tuple_element_t<I, BuiltinLaws>::name ==
-           std::array{"hertz", "elastoplastic", "linearized", "hunt-crossley"}[I]) &&
-          ...);
+  return ((std::tuple_element_t<I, BuiltinLaws>::kind == static_cast<LawKind>(I)) && ...);
 }
 static_assert(std::tuple_size_v<BuiltinLaws> == static_cast<std::size_t>(LawKind::expression));
 static_assert(kinds_follow_the_tuple(std::make_index_sequence<std::tuple_size_v<BuiltinLaws>>()));

@@ -3,8 +3,8 @@
 //
 // A row is generated from the law's own header (its `name`, `summary`, `parameters`,
 // `rate_dependent`, `needs_yield_strength` and `make`). Adding a built-in law is its header,
-// its test, and one entry in `BuiltinLaws` with its `LawKind` beside it (same order; checked at
-// compile time in law_registry.cc).
+// its test, its enumerator in `LawKind` (solver/law_kind.h) named by its member `kind`, and one
+// entry in `BuiltinLaws` in the same order (checked at compile time in law_registry.cc).
 //
 // Laws are templates in the hot loop: `with_builtin_law` dispatches once per impact.
 #pragma once
@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "scene/scene.h"
+#include "solver/law_kind.h"
 #include "solver/law_parameters.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hertz.h"
@@ -27,7 +28,6 @@ namespace ivv {
 // The built-in laws (this order is LawKind's), then `expression`: a law typed on the command
 // line (solver/laws/expression.h), which has no fixed parameters.
 using BuiltinLaws = std::tuple<HertzLaw, ElastoplasticLaw, LinearizedLaw, HuntCrossleyLaw>;
-enum class LawKind { hertz, elastoplastic, linearized, hunt_crossley, expression };
 
 struct LawInfo {
   LawKind kind;

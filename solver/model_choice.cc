@@ -106,7 +106,7 @@ void check_closed_form(ImpactResult& r, const Scene& scene, const DerivedParamet
   const std::string why = consistency_failure(c, opt, what);
   if (!why.empty()) {
     r.status = ImpactStatus::failed;
-    r.failure = FailureKind::integrator;
+    r.failure = FailureKind::inconsistent;
     r.reason = why;
   }
 }
@@ -146,21 +146,20 @@ LinearEstimate linear_estimate(const Scene& scene, const DerivedParameters& p, d
     return out;
   const UndampedImpact nl = undamped_elastoplastic(m, p.K_h, p.z_y, v0, false, rtol);
   if (!nl.yielded) return out;
-  try {  // eq 20 and the linear model throw below z_m = 2.25 z_y, where the law is undefined
-    const double g2 = oracles::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
-    if (!(g2 > 0) || !(growth * rel(std::sqrt(g2), nl.e) <= rtol)) return out;
-    const oracles::LinearImpact lin0 = oracles::solve_linear_model({m, p.K_h, p.K_y, 0.0, v0});
-    const UndampedImpact nlt = undamped_elastoplastic(m, p.K_h, p.z_y, v0, true, rtol);
-    out.D0 = std::max({rel(lin0.e, nlt.e), rel(lin0.z_max, nlt.z_max), rel(lin0.F_max, nlt.F_max),
-                       rel(lin0.t_contact, nlt.t_contact)});
-    const oracles::LinearImpact lin =
-        oracles::solve_linear_model(oracles::linear_model_input(scene, p));
-    out.zeta_unload = lin.zeta_unload;
-    out.defined = true;
-    out.estimate = growth * out.D0;
-  } catch (const oracles::LinearizedLawUndefined&) {
-    out.defined = false;
-  }
+  // the linearized law is undefined below z_m = 2.25 z_y (eq 17): asked, not caught
+  const oracles::LinearModelInput undamped{m, p.K_h, p.K_y, 0.0, v0};
+  if (!oracles::linearized_law_defined(undamped)) return out;
+  const double g2 = oracles::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
+  if (!(g2 > 0) || !(growth * rel(std::sqrt(g2), nl.e) <= rtol)) return out;
+  const oracles::LinearImpact lin0 = oracles::solve_linear_model(undamped);
+  const UndampedImpact nlt = undamped_elastoplastic(m, p.K_h, p.z_y, v0, true, rtol);
+  out.D0 = std::max({rel(lin0.e, nlt.e), rel(lin0.z_max, nlt.z_max), rel(lin0.F_max, nlt.F_max),
+                     rel(lin0.t_contact, nlt.t_contact)});
+  const oracles::LinearModelInput damped = oracles::linear_model_input(scene, p);
+  if (!oracles::linearized_law_defined(damped)) return out;
+  out.zeta_unload = oracles::solve_linear_model(damped).zeta_unload;
+  out.defined = true;
+  out.estimate = growth * out.D0;
   return out;
 }
 
@@ -199,11 +198,9 @@ ModelDecision decide_model(const ValidatedRequest& v, bool trajectory_wanted) {
     d.route = ModelRoute::hunt_crossley_lambert_w;
   } else if (req.law == LawKind::linearized) {
     // its own closed form is exact for it; where the law is undefined the integrator says so
-    try {
-      oracles::solve_linear_model(oracles::linear_model_input(req.scene, p));
+    if (oracles::linearized_law_defined(oracles::linear_model_input(req.scene, p))) {
       d.route = ModelRoute::linearized_closed_form;
       d.estimated_error = kEstimateClosedForm;
-    } catch (const oracles::LinearizedLawUndefined&) {
     }
   } else if (req.law == LawKind::elastoplastic) {
     const LinearEstimate lin = linear_estimate(req.scene, p, req.options.rtol);

@@ -1,7 +1,7 @@
 // `--model auto`: model only what a scene needs (issue 8, part 3). From the scene, the law and
 // the requested tolerance rtol, one of these routes runs (first that applies):
 //
-//  1. closed-form elastoplastic (energy): elastoplastic law, no dashpot. SPEC §2 "Undamped
+//  1. closed-form elastoplastic (energy): elastoplastic law, no dashpot. docs/design.md §2 "Undamped
 //     elastoplastic, closed form by energy" gives z_m, F_max, z_f, e and the hysteresis work
 //     exactly; the contact time in closed form on the loading legs (elastic leg: incomplete
 //     beta function, t = (z_H/v0)(2/5) B(u_y; 2/5, 1/2) with u_y = (z_y/z_H)^{5/2}, z_H the
@@ -12,7 +12,7 @@
 //     Written here apart from oracles/undamped_elastoplastic.h (GSL QAGS, ~3-14 us per impact:
 //     slower than integrating), which checks it in the autochoice cases.
 //  2. closed-form hertz (energy): hertz law, no dashpot. z_m = (5 m v0^2/(4 K_h))^{2/5},
-//     F_max = K_h z_m^{3/2}, t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 (SPEC §2).
+//     F_max = K_h z_m^{3/2}, t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 (docs/design.md §2).
 //  3. hunt-crossley: e exactly by Lambert W (closed_forms/hunt_crossley.h: independent of K, m and
 //     the exponent); F_max (not at z_m: the rate term), t_f and the impulses have no closed
 //     form, so the integrator runs for them and its e is replaced by the exact one (the

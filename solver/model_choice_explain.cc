@@ -39,7 +39,7 @@ struct Explanation {
     c.law = "closed-form elastoplastic (energy)";
     c.integrator = "none";
     say("elastoplastic law without a dashpot: z_m, F_max, z_f, e and the hysteresis work "
-        "exactly by energy (SPEC §2); t_f in closed form on the loading legs and by "
+        "exactly by energy (docs/design.md §2); t_f in closed form on the loading legs and by "
         "Gauss-Legendre quadrature on the unloading leg; no integration");
     say("events: onset, maximum compression (= maximum displacement) and separation; the "
         "yield event's time is not computed by the closed form (absent)");
@@ -51,7 +51,7 @@ struct Explanation {
     c.law = "closed-form hertz (energy)";
     c.integrator = "none";
     say("hertz law without a dashpot: z_m = (5 m v0^2/(4 K_h))^(2/5), F_max = K_h z_m^1.5, "
-        "t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 exactly (SPEC §2); no integration");
+        "t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1 exactly (docs/design.md §2); no integration");
     say("estimated relative error: round-off (" + fmt3(kEstimateClosedForm) + ")");
   }
 
@@ -61,7 +61,7 @@ struct Explanation {
     const double mu = HuntCrossleyLaw::make(req.parameters, p).mu;
     say("hunt-crossley: e = [1 + W0(-(1 + u0) e^-(1 + u0))]/u0 exactly (u0 = mu v0 = " +
         fmt3(mu * req.scene.velocity) +
-        ", SPEC §2); F_max, t_f, z_max and the impulses have no closed form: integrated");
+        ", docs/design.md §2); F_max, t_f, z_max and the impulses have no closed form: integrated");
     integrator_words();
     if (r.separated())
       say("the integrated Poisson COR " + fmt3(r.e_poisson) + " against the exact e " + fmt3(r.e) +

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "solver/steppers/step_result.h"
+
 namespace ivv {
 
 enum class ImpactStatus {
@@ -13,11 +15,46 @@ enum class ImpactStatus {
   failed      // see ImpactResult::reason
 };
 
-// Why a run failed. law_domain: the law is undefined for this scene or at contact onset, which
-// is known before any step (a front end treats it as bad input); law_non_finite: the law
-// returned NaN or infinity at a state reached inside contact (a computation that failed);
-// integrator: a step, a root finder or a budget ran out.
-enum class FailureKind { none, law_domain, law_non_finite, integrator };
+// Why a run failed: a code for tests and programs (to_string spells it: the JSON's "failure"),
+// beside ImpactResult::reason for people.
+//   law_domain         the law is undefined for this scene or at contact onset, known before any
+//                      step (a front end treats it as bad input)
+//   law_non_finite     the law returned NaN or infinity at a state reached inside contact
+//   step_underflow ... library_error
+//                      one step failed: the codes of StepFailure (solver/steppers/step_result.h)
+//   event_location     a root finder out of iterations, or a NaN inside its bracket
+//   event_refinement   the Hermite re-steps that refine an event did not converge, or one failed
+//   step_limit         no separation within IntegratorOptions::max_steps
+//   time_limit         no separation before IntegratorOptions::tau_max
+//   still_approaching  the force vanished with the impactor still approaching: the integration
+//                      error exceeds the remaining force
+//   inconsistent       the run ended but its CORs or energy ledger disagree beyond the stated
+//                      error, or an outcome is not a finite number (solver/consistency.h)
+//   integrator         any other failure of an integration (no integrator of that number)
+enum class FailureKind {
+  none,
+  law_domain,
+  law_non_finite,
+  step_underflow,
+  attempts_exhausted,
+  non_finite_state,
+  singular_matrix,
+  unstable_step,
+  library_error,
+  event_location,
+  event_refinement,
+  step_limit,
+  time_limit,
+  still_approaching,
+  inconsistent,
+  integrator,
+};
+
+std::string_view to_string(FailureKind k);
+// Every kind but none, law_domain and law_non_finite: the integration, not the law, failed.
+bool is_integrator_failure(FailureKind k);
+// The run's failure for a step that failed with `f`.
+FailureKind failure_of_step(StepFailure f);
 
 enum class EventKind {
   onset,
@@ -40,7 +77,7 @@ struct ImpactEvent {
   double force;  // [N]
 };
 
-// Energy ledger (SPEC §1): initial = final + stored + plastic + viscous + residual.
+// Energy ledger (docs/design.md §1): initial = final + stored + plastic + viscous + residual.
 struct EnergyLedger {
   double initial = 0.0;  // 1/2 m v0^2 [J]
   double final = 0.0;    // 1/2 m alpha_dot_f^2 [J]

@@ -44,6 +44,68 @@ std::span<const LawKind> all_laws() {
   return kLaws;
 }
 
+std::string_view to_string(FailureKind k) {
+  switch (k) {
+    case FailureKind::none:
+      return "none";
+    case FailureKind::law_domain:
+      return "law_domain";
+    case FailureKind::law_non_finite:
+      return "law_non_finite";
+    case FailureKind::step_underflow:
+      return "step_underflow";
+    case FailureKind::attempts_exhausted:
+      return "attempts_exhausted";
+    case FailureKind::non_finite_state:
+      return "non_finite_state";
+    case FailureKind::singular_matrix:
+      return "singular_matrix";
+    case FailureKind::unstable_step:
+      return "unstable_step";
+    case FailureKind::library_error:
+      return "library_error";
+    case FailureKind::event_location:
+      return "event_location";
+    case FailureKind::event_refinement:
+      return "event_refinement";
+    case FailureKind::step_limit:
+      return "step_limit";
+    case FailureKind::time_limit:
+      return "time_limit";
+    case FailureKind::still_approaching:
+      return "still_approaching";
+    case FailureKind::inconsistent:
+      return "inconsistent";
+    case FailureKind::integrator:
+      return "integrator";
+  }
+  return "unknown";
+}
+
+bool is_integrator_failure(FailureKind k) {
+  return k != FailureKind::none && k != FailureKind::law_domain && k != FailureKind::law_non_finite;
+}
+
+FailureKind failure_of_step(StepFailure f) {
+  switch (f) {
+    case StepFailure::none:
+      return FailureKind::integrator;  // a failure without its code
+    case StepFailure::step_underflow:
+      return FailureKind::step_underflow;
+    case StepFailure::attempts_exhausted:
+      return FailureKind::attempts_exhausted;
+    case StepFailure::non_finite_state:
+      return FailureKind::non_finite_state;
+    case StepFailure::singular_matrix:
+      return FailureKind::singular_matrix;
+    case StepFailure::unstable_step:
+      return FailureKind::unstable_step;
+    case StepFailure::library_error:
+      return FailureKind::library_error;
+  }
+  return FailureKind::integrator;
+}
+
 std::string_view to_string(ImpactStatus s) {
   switch (s) {
     case ImpactStatus::separated:

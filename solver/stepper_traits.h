@@ -13,9 +13,11 @@ namespace ivv {
 template <template <class> class Stepper, class T = double>
 constexpr IntegratorTraits stepper_traits(IntegratorKind kind) {
   using S = Stepper<ImpactSystem<HertzLaw, false, T>>;
-  return {kind,        S::name,         S::description, S::order,
-          S::implicit, S::dense_output, S::fixed_step,  S::fixed_step || S::fixed_step_mode,
-          S::reference};
+  return {kind,           S::name,
+          S::description, S::order,
+          S::implicit,    S::dense_output,
+          S::fixed_step,  S::fixed_step || S::fixed_step_mode,
+          S::reference,   S::measured_relative_error};
 }
 
 }  // namespace ivv

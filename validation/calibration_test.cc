@@ -44,7 +44,7 @@ TEST(Calibration, RecoversYieldStrengthFromNoiseFreeData) {
   ASSERT_TRUE(r.p_value.has_value());
 }
 
-// Data all below yield (paper scene: v_y ~ 0.2 m/s, SPEC §3 "0.1 m/s is elastic") cannot
+// Data all below yield (paper scene: v_y ~ 0.2 m/s, docs/design.md §3 "0.1 m/s is elastic") cannot
 // determine S_y: named unidentifiable, no number; c is still determined.
 TEST(Calibration, YieldStrengthFromElasticDataIsUnidentifiable) {
   SimulationRequest truth = paper(0.1);

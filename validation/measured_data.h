@@ -1,4 +1,4 @@
-// Measured restitution data for calibration and validation (SPEC §5 "Measured data").
+// Measured restitution data for calibration and validation (docs/design.md §5 "Measured data").
 //
 // File format: CSV with a header line, comma-separated, one impact per row.
 //   v0         impact velocity [m/s]                                  required, finite > 0

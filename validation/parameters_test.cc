@@ -28,7 +28,7 @@ TEST(Parameters, EveryFittableNameReadsBackWhatItSets) {
 }
 
 TEST(Parameters, DashpotGivenAsRatioReadsAsCoefficient) {
-  // paper scene: zeta = 0.1 <=> c = 11440 N s/m (SPEC §1, to the 4 digits given there)
+  // paper scene: zeta = 0.1 <=> c = 11440 N s/m (docs/design.md §1, to the 4 digits given there)
   EXPECT_NEAR(parameter_value(paper_request(), "c"), 11440, 0.5e-3 * 11440);
 }
 

@@ -4,7 +4,7 @@
 // files reference_data/scenes/chung-ooi-*.toml, loaded by name as a user would run them.
 //
 // Both tests are elastic (no yield strength, no damping), so the reference is the Hertz
-// closed form of SPEC §2 with the effective radius and mass (oracles/hertz.h):
+// closed form of docs/design.md §2 with the effective radius and mass (oracles/hertz.h):
 //   z_m = (5 m* v0^2/(4 K_h))^{2/5},  F_max = K_h z_m^{3/2},  t_f = 2.9432752 z_m/v0,  e = 1,
 // K_h = (4/3) sqrt(R*) E*. Test 1 (two identical free spheres) also checks the body velocities
 // after impact: with e = 1, v1 = (m1 - m2) v0/(m1 + m2) and v2 = 2 m1 v0/(m1 + m2) in the
@@ -61,7 +61,7 @@ Outcome chung_ooi(const DemBenchmarkScene& t, IntegratorKind k) {
                         (s.free_target() ? ", body velocities" : ""));
 }
 
-// Test 3, normal component: Hertz with the Tsuji-type damping of DEM codes (SPEC §3) set for a
+// Test 3, normal component: Hertz with the Tsuji-type damping of DEM codes (docs/design.md §3) set for a
 // target e_t, as an expression law, once clamped (F >= 0) and once with tension until z = 0.
 // With damping ~ z^{1/4} sqrt(m* E* sqrt(R*)) the normalised equation has neither v0 nor the
 // material in it, so the delivered e depends on e_t alone: both materials must give the same e

@@ -242,8 +242,10 @@ void register_structure_cases(Registry& reg) {
   const char* ids[] = {"structure.zener.lambda-0.1", "structure.zener.lambda-0.5",
                        "structure.zener.lambda-1.0"};
   for (std::size_t i = 0; i < 3; ++i) {
-    reg.add({ids[i], "Zener's plate impact: e at the lambda quoted in issue 18", Tier::analytic,
-             published_reason, false, [i] { return published_value(i); }});
+    reg.add({ids[i],
+             "Zener's plate impact: e at a lambda quoted to 5 decimals (a review's value; no "
+             "published table traced)",
+             Tier::analytic, published_reason, false, [i] { return published_value(i); }});
   }
   reg.add({"structure.zener.small-lambda-slope",
            "1 - e = a lambda as lambda -> 0, a by quadrature of the undamped Hertz impact",

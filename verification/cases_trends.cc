@@ -1,4 +1,4 @@
-// Published-trend tier: the paper's claims (SPEC §3) and the published restitution laws, each
+// Published-trend tier: the paper's claims (docs/design.md §3) and the published restitution laws, each
 // turned into a measurable statement with a stated threshold. The cases read the studies that
 // the report draws (study_restitution.h, study_paper.h), so what the report shows is what is
 // judged here; only eqs 20-21 run their own impacts (the report does not draw them).
@@ -529,7 +529,7 @@ void register_published_trend_cases(Registry& reg) {
            "over v0 (1 +- 1e-3) have O(h^2) error ~1e-7 and e is accurate to 1e-11",
            false, slope_limit});
   reg.add({"trend.cor-slope-near-yield", "The slope is about -0.257 near 15 v_y, not -1/4 yet", T,
-           "SPEC quotes three digits (-0.257): rounding allows 5e-4, the 0.1% central difference "
+           "docs/design.md §3 quotes three digits (-0.257): rounding allows 5e-4, the 0.1% central difference "
            "adds < 1e-7; 1e-3",
            false, slope_near_yield});
   reg.add({"trend.cor-undamped-simulated-is-closed-form",

@@ -38,7 +38,7 @@ CalibrationOptions fitting(std::vector<std::string> names, bool profile = true) 
   return o;
 }
 
-// Velocities spanning the paper's plastic range: 0.3 to 5 m/s (v_y ~ 0.2 m/s; SPEC §3).
+// Velocities spanning the paper's plastic range: 0.3 to 5 m/s (v_y ~ 0.2 m/s; docs/design.md §3).
 std::vector<double> plastic_velocities(int n) {
   return log_velocities(0.3, 5.0, n);
 }
@@ -111,7 +111,7 @@ Outcome coverage(int sets) {
 
 namespace {
 
-// Data all below yield (0.01-0.1 m/s; the paper's 0.1 m/s is elastic, SPEC §3) determine the
+// Data all below yield (0.01-0.1 m/s; the paper's 0.1 m/s is elastic, docs/design.md §3) determine the
 // dashpot but not S_y: the case passes when S_y is named unidentifiable and c is not.
 Outcome elastic_data() {
   const SimulationRequest truth = damped_paper();

@@ -213,7 +213,7 @@ using Report = ConformanceResult;  // the former name, kept for existing code
 // "passed", "measured", "reference", "tolerance", "bound", "unit", "unit_si", "si_unit",
 // "value", "reference_value", "value_unit", "why", "detail"}], "skipped": [{"id", "why"}],
 // "not_applicable" (the same list under its former name), "cor": [{"v0", "zeta", "c", "e",
-// "e_bound", "expected", "status"}]} (SPEC §5; NaN and absent values are null).
+// "e_bound", "expected", "status"}]} (docs/design.md §5; NaN and absent values are null).
 nlohmann::json to_json(const ConformanceResult& result);
 
 ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims, const Grid& grid);

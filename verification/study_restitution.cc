@@ -108,11 +108,9 @@ CorZetaStudy compute_cor_zeta() {
     std::vector<double> lin;
     for (double zeta : st.linear_zetas) {
       const Scene s = with(paper_scene(), v0, zeta);
-      try {
-        lin.push_back(oracles::solve_linear_model(oracles::linear_model_input(s, derive(s))).e);
-      } catch (const oracles::LinearizedLawUndefined&) {
-        lin.push_back(kNaN);  // outside the linearized law's domain
-      }
+      const oracles::LinearModelInput in = oracles::linear_model_input(s, derive(s));
+      // NaN outside the linearized law's domain (a gap in the curve)
+      lin.push_back(oracles::linearized_law_defined(in) ? oracles::solve_linear_model(in).e : kNaN);
     }
     st.linear_e.push_back(std::move(lin));
   }

@@ -9,7 +9,7 @@
 //     above round-off). Judged by convergence.rk4.events-at-step-ends and
 //     convergence.dp45.events-at-step-ends.
 //   * hard_case_study(): every double-precision integrator at its defaults (rtol = atol =
-//     1e-10; rk4 dt = 1e-3 in tau) on the hard scenes of SPEC §6 (a stiff dashpot, a grazing and
+//     1e-10; rk4 dt = 1e-3 in tau) on the hard scenes of docs/design.md §6 (a stiff dashpot, a grazing and
 //     a fast impact, a capture, Hunt-Crossley with mu v0 = 5), with an independent e where one
 //     exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of each
 //     run is recorded as information only: it is measured while other cases may run on other

@@ -60,7 +60,8 @@ struct StructureStudy {
   double slope_richardson = 0.0;            // 2 g(1e-3) - g(2e-3), g = (1 - e)/lambda
   double slope_richardson_next = 0.0;       // 2 g(2e-3) - g(4e-3): its O(lambda^2) error is 4x
   std::vector<ZenerPoint> published;        // lambda = 0.1, 0.5, 1.0
-  std::vector<double> published_values;     // 0.84334, 0.43690, 0.18412 (issue 18)
+  std::vector<double> published_values;     // 0.84334, 0.43690, 0.18412 (quoted to 5 decimals by a
+                                            // review of ivv; not traced to a publication)
   std::vector<SimilarityPoint> similarity;  // lambda = 0.5 on four unlike scenes
   // the paper's impactor on the T300/934 plate
   Ply ply;                                   // Table 1 ply data

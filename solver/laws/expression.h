@@ -1,4 +1,4 @@
-// Expression contact law: a force law typed on the command line, parsed by muParser (SPEC §5).
+// Expression contact law: a force law typed on the command line, parsed by muParser (docs/design.md §5).
 //
 //   loading     F = force (z, zdot, zmax = z)            until dz/dt = 0
 //   unloading   F = unload(z, zdot, zmax = z_m)          after it; default: the loading

@@ -179,7 +179,7 @@ TEST(ExpressionLaw, RateDependentExpressionRefusesASeriesDashpot) {
   EXPECT_THROW(validate(r), InputError);
 }
 
-// Linear spring-dashpot m z'' + c z' + k z = 0 with tension allowed until z = 0 (SPEC §3):
+// Linear spring-dashpot m z'' + c z' + k z = 0 with tension allowed until z = 0 (docs/design.md §3):
 // e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m)).
 TEST(ExpressionLaw, LinearSpringDashpotWithTensionGivesTheClosedFormCor) {
   const double m = paper_scene().mass, k = 4e6;

@@ -13,12 +13,14 @@
 
 #include "scene/scene.h"
 #include "solver/law.h"
+#include "solver/law_kind.h"
 #include "solver/law_parameters.h"
 
 namespace ivv {
 
 struct HertzLaw {
   static constexpr std::string_view name = "hertz";
+  static constexpr LawKind kind = LawKind::hertz;  // its row in the registry
   static constexpr bool rate_dependent = false;
   static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
   static constexpr bool needs_yield_strength = false;

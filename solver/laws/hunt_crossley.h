@@ -15,12 +15,14 @@
 
 #include "scene/scene.h"
 #include "solver/law.h"
+#include "solver/law_kind.h"
 #include "solver/law_parameters.h"
 
 namespace ivv {
 
 struct HuntCrossleyLaw {
   static constexpr std::string_view name = "hunt-crossley";
+  static constexpr LawKind kind = LawKind::hunt_crossley;  // its row in the registry
   static constexpr bool rate_dependent = true;
   static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
   static constexpr bool needs_yield_strength = false;

@@ -18,12 +18,14 @@
 
 #include "scene/scene.h"
 #include "solver/law.h"
+#include "solver/law_kind.h"
 #include "solver/law_parameters.h"
 
 namespace ivv {
 
 struct LinearizedLaw {
   static constexpr std::string_view name = "linearized";
+  static constexpr LawKind kind = LawKind::linearized;  // its row in the registry
   static constexpr bool rate_dependent = false;
   static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
   static constexpr bool needs_yield_strength = true;

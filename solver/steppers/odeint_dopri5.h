@@ -24,6 +24,8 @@ class OdeintDopri5Stepper {
   static constexpr bool fixed_step = false;
   static constexpr bool fixed_step_mode = true;
   static constexpr bool reference = false;
+  // the paper scene at default settings, relative error of e against mp50: measured 5.8e-11
+  static constexpr double measured_relative_error = 1e-9;
   static constexpr std::string_view description =
       "Boost.Odeint Dormand-Prince 5(4), controlled, dense output (default)";
 
@@ -48,7 +50,8 @@ class OdeintDopri5Stepper {
     try {
       stepper_.do_step(rhs);
     } catch (const std::exception& e) {
-      return StepResult::failure(std::string("odeint-dopri5: ") + e.what());
+      return StepResult::failure(StepFailure::library_error,
+                                 std::string("odeint-dopri5: ") + e.what());
     }
     ++steps_;
     return StepResult::success();

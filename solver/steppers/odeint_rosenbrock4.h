@@ -29,6 +29,8 @@ class OdeintRosenbrock4Stepper {
   static constexpr bool fixed_step = false;
   static constexpr bool fixed_step_mode = false;
   static constexpr bool reference = false;
+  // the paper scene at default settings, relative error of e against mp50: measured 2.0e-11
+  static constexpr double measured_relative_error = 1e-9;
   static constexpr std::string_view description =
       "Boost.Odeint Rosenbrock 4(3), linearly implicit, dense output: stiff scenes";
   static constexpr std::size_t N = System::N;
@@ -62,7 +64,8 @@ class OdeintRosenbrock4Stepper {
     try {
       stepper_.do_step(std::make_pair(rhs, jac));
     } catch (const std::exception& e) {
-      return StepResult::failure(std::string("odeint-rosenbrock4: ") + e.what());
+      return StepResult::failure(StepFailure::library_error,
+                                 std::string("odeint-rosenbrock4: ") + e.what());
     }
     from_vector(stepper_.previous_state(), x0_);
     from_vector(stepper_.current_state(), x1_);

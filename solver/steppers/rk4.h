@@ -33,6 +33,9 @@ class Rk4Stepper : public HermiteSteps<System> {
   static constexpr bool fixed_step = true;
   static constexpr bool fixed_step_mode = true;
   static constexpr bool reference = false;
+  // the paper scene at default settings, relative error of e against mp50: measured 9.2e-11 (fixed
+  // step, --dt default)
+  static constexpr double measured_relative_error = 1e-9;
   static constexpr std::string_view description =
       "hand-written classical Runge-Kutta 4, fixed step (--dt), Hermite interpolant";
 
@@ -48,7 +51,7 @@ class Rk4Stepper : public HermiteSteps<System> {
         os << "rk4: step h = " << static_cast<double>(h_)
            << " (normalised) lies outside the RK4 stability region for this scene (h |lambda| = "
            << std::abs(z) << "); use a smaller --dt or an implicit integrator";
-        return StepResult::failure(os.str());
+        return StepResult::failure(StepFailure::unstable_step, os.str());
       }
     }
     state_type x1;
