@@ -31,8 +31,8 @@
 // a = alpha/z*, the equations m alpha'' = -F, c y' = F become a'' = -sigma^{3/2},
 // y' = lambda sigma^{3/2}: e depends on lambda alone (docs/design.md §1).
 //
-// A finite plate (SPEC §1 "A finite plate"): with length_x = a and length_y = b the plate is a
-// Kirchhoff plate a x b, simply supported on its four edges, struck at (impact_x, impact_y)
+// A finite plate (docs/design.md §1 "A finite plate"): with length_x = a and length_y = b the plate
+// is a Kirchhoff plate a x b, simply supported on its four edges, struck at (impact_x, impact_y)
 // (default the centre), isotropic (D12 = nu D, D66 = (1 - nu) D/2) or specially orthotropic
 // with D11, D22, D12, D66 given. Its dynamics are solver/plate/; here only its description and
 // the checks of bad input. Given D11..D66 also define the infinite plate's D* (Olsson's).

@@ -2,8 +2,8 @@
 // hand-written steppers (solver/steppers/dop853.h): start(sys, t, x), step(sys) -> StepResult,
 // interpolate(sys, t, out), t0(), t1(), x0(), x1(), steps(), for a state of any size
 // (std::vector<double>: the plate's 2N + 2 entries). The plate driver (plate_impact.h) is a
-// template on its stepper, so that the generic hand-written steppers replace this one by a
-// type once they take a vector state.
+// template on its stepper; this one is its second integrator beside the hand-written DOP853
+// (PlateImpactOptions::stepper), sharing nothing with it but the interface.
 //
 // Error control: odeint's controlled_runge_kutta with its default error checker,
 // max_i |err_i|/(atol + rtol (|x_i| + h |x'_i|)) <= 1; the dense output is dopri5's fourth-order
@@ -44,7 +44,8 @@ class OdeintDenseDopri5 {
     try {
       stepper_.do_step(f);
     } catch (const std::exception& e) {
-      return StepResult::failure(std::string("odeint-dopri5: ") + e.what());
+      return StepResult::failure(StepFailure::library_error,
+                                 std::string("odeint-dopri5: ") + e.what());
     }
     ++steps_;
     dt_ = stepper_.current_time_step();

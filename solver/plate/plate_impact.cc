@@ -9,6 +9,7 @@
 #include "solver/plate/odeint_dense_stepper.h"
 #include "solver/plate/plate_impact_driver.h"
 #include "solver/plate/plate_modes.h"
+#include "solver/steppers/dop853.h"
 
 namespace ivv {
 namespace {
@@ -53,9 +54,14 @@ PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedPar
   try {
     if constexpr (!Law::rate_dependent) {
       using System = PlateSystem<Law>;
-      PlateImpactDriver<Law, OdeintDenseDopri5<System>> driver(law, k, modes, p.effective_mass,
-                                                               opt);
-      driver.run(out);
+      if (opt.stepper == PlateImpactOptions::Stepper::dop853) {
+        PlateImpactDriver<Law, Dop853Stepper<System>> driver(law, k, modes, p.effective_mass, opt);
+        driver.run(out);
+      } else {
+        PlateImpactDriver<Law, OdeintDenseDopri5<System>> driver(law, k, modes, p.effective_mass,
+                                                                 opt);
+        driver.run(out);
+      }
     }
   } catch (const PlateRunFailure& f) {
     out.ok = false;
@@ -102,7 +108,7 @@ PlateRun run_plate_simulation(const RequestOptions& o) {
   refuse_for_plate(o.c.has_value(), "--c", dashpot);
   refuse_for_plate(o.lambda.has_value(), "--lambda", dashpot);
   refuse_for_plate(o.no_dashpot, "--no-dashpot", dashpot);
-  const char* own = "the plate's modes are integrated by odeint-dopri5 with event location";
+  const char* own = "the plate's modes are integrated by dop853 with event location";
   refuse_for_plate(o.integrator != "auto", "--integrator", own);
   refuse_for_plate(o.dt.has_value(), "--dt", own);
   refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);

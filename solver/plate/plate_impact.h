@@ -1,5 +1,5 @@
-// A sphere striking a finite, simply supported Kirchhoff plate (SPEC §1 "A finite plate"): the
-// contact law between the impactor and the plate's modes, no dashpot.
+// A sphere striking a finite, simply supported Kirchhoff plate (docs/design.md §1 "A finite
+// plate"): the contact law between the impactor and the plate's modes, no dashpot.
 //
 //   m alpha'' = -F                                   impactor, alpha [m] towards the plate
 //   u_k''     = -omega_k^2 u_k + g_k F              kept modes (plate_modes.h), u_k [m]
@@ -36,7 +36,7 @@
 // separation (negative when the ball still moves towards the plate there); every contact's
 // start, end, impulse m (alpha'_start - alpha'_end) and peak force; F_max over all; the first
 // contact's duration t_contact; the total impulse m (v0 - alpha'_final). Energy ledger, checked
-// at every maximum of compression and every separation (SPEC §1):
+// at every maximum of compression and every separation (docs/design.md §1):
 //   (1/2) m v0^2 = (1/2) m alpha'^2 + E_plate + (1/2) C_res F^2 + W_spring,
 //   E_plate = sum_k (u_k'^2 + omega_k^2 u_k^2)/(2 g_k) (kinetic + strain of the kept modes),
 //   W_spring = hysteresis_work(h) + stored_energy(h, z) on an unloading branch (law.h);
@@ -69,6 +69,10 @@ struct PlateImpactOptions {
   double cutoff = 40.0;
   std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
   bool residual = true;           // false: drop C_res (plain truncation, for the convergence study)
+  // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h), or
+  // Boost.Odeint's dense dopri5 (a second integrator for the same equations).
+  enum class Stepper { dop853, odeint_dopri5 };
+  Stepper stepper = Stepper::dop853;
   int max_contacts = 10000;
   long max_steps = 20'000'000;  // integration steps + free-flight steps
 };

@@ -113,6 +113,24 @@ TEST(PlateImpact, ElastoplasticReloadingKeepsTheLedger) {
   EXPECT_GT(r.F_max, 1000.0);  // kN, not the infinite plate's 673 N
 }
 
+// The same equations through the hand-written DOP853 and Boost.Odeint's dopri5: each meets rtol
+// 1e-10 per step over a few thousand steps, so their e, e_first and F_max agree to ~1e-8 (1e-7
+// with room), and they see the same contacts.
+TEST(PlateImpact, TwoSteppersAgree) {
+  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  PlateImpactOptions opt;
+  opt.cutoff = 10.0;
+  const PlateImpactResult a = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  opt.stepper = PlateImpactOptions::Stepper::odeint_dopri5;
+  const PlateImpactResult b = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  ASSERT_TRUE(a.ok && b.ok) << a.reason << b.reason;
+  EXPECT_EQ(a.contacts.size(), b.contacts.size());
+  EXPECT_NEAR(a.e, b.e, 1e-7);
+  EXPECT_NEAR(a.e_first, b.e_first, 1e-7);
+  EXPECT_NEAR(a.F_max / b.F_max, 1.0, 1e-7);
+  EXPECT_LT(a.steps, b.steps);  // the eighth-order pair takes fewer steps
+}
+
 TEST(PlateImpact, RefusesWhatItDoesNotModel) {
   Scene s = ball_on_plate(0.05, 0.04, 0.001);
   try {

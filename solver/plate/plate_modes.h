@@ -1,5 +1,5 @@
 // The Navier modes of a simply supported, specially orthotropic Kirchhoff plate, seen from the
-// impact point, and its exact static compliance there (SPEC §1 "A finite plate").
+// impact point, and its exact static compliance there (docs/design.md §1 "A finite plate").
 //
 // Plate a x b x h, density rho, bending stiffnesses D11, D22, D12, D66 [N m] (D16 = D26 = 0),
 // all four edges simply supported, point force F [N] at (x0, y0). Mode (m, n), m, n >= 1:
