@@ -4,6 +4,8 @@
 #include <optional>
 #include <sstream>
 
+#include "solver/plate/plate_modes.h"
+
 namespace ivv {
 namespace {
 // JSON has no infinity: an absent dashpot is null.
@@ -241,9 +243,22 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
         {"D12", plate.bending.D12},
         {"D66", plate.bending.D66},
         {"mass", plate.mass()},
-        {"mass_ratio", s.mass / plate.mass()}}},
+        {"mass_ratio", s.mass / plate.mass()},
+        // 2 d_edge/c_g at omega = pi/t_contact (solver/plate/plate_modes.h), against t_contact
+        {"wave_return_time", run.result.ok
+                                 ? nlohmann::json(flexural_return_time(plate, run.result.t_contact))
+                                 : nlohmann::json(nullptr)}}},
       {"options",
        {{"rtol", run.options.rtol}, {"atol", run.options.atol}, {"cutoff", run.options.cutoff}}},
+      {"truncation",
+       {{"mode_count", run.result.mode_count},
+        {"omega_cut", finite_or_null(run.result.omega_cut)},
+        {"e_at_half_cutoff", finite_or_null(run.e_half_cutoff)},
+        {"estimated_error_e", finite_or_null(run.truncation_error)},
+        {"rule",
+         "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as the "
+         "static compliance C_res in series; error of e estimated as |e - e(cutoff/2)|/7 "
+         "(observed order 3 in the cut-off)"}}},
       {"result", plate_result_json(run.result)},
   };
 }

@@ -132,6 +132,15 @@ PlateRun run_plate_simulation(const RequestOptions& o) {
   require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
           run.options.atol);
   run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
+  if (run.result.ok) {
+    PlateImpactOptions half = run.options;
+    half.cutoff /= 2.0;
+    const PlateImpactResult r = simulate_plate_impact(run.scene, run.law, run.parameters, half);
+    if (r.ok) {
+      run.e_half_cutoff = r.e;
+      run.truncation_error = std::abs(run.result.e - r.e) / 7.0;
+    }
+  }
   return run;
 }
 

@@ -104,6 +104,16 @@ StaticCompliance plate_static_compliance(const FinitePlate& p) {
   return out;
 }
 
+double flexural_return_time(const FinitePlate& p, double t_contact) {
+  const double d =
+      std::min({p.impact_x, p.length_x - p.impact_x, p.impact_y, p.length_y - p.impact_y});
+  const double omega = pi / t_contact;
+  const double c_g =
+      2.0 * std::pow(olsson_bending_stiffness(p.bending) / (p.density * p.thickness), 0.25) *
+      std::sqrt(omega);
+  return 2.0 * d / c_g;
+}
+
 std::size_t count_plate_modes(const FinitePlate& p, double omega_cut) {
   std::size_t count = 0;
   for (int m = 1; plate_mode_frequency(p, m, 1) <= omega_cut; ++m) {

@@ -94,6 +94,14 @@ struct PlateModes {
 // plate may be the model wanted), std::invalid_argument for omega_cut not > 0 and finite.
 PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options);
 
+// The time a flexural wave needs to return to the impact point from the nearest edge, 2 d/c_g
+// [s], d = min(x0, a - x0, y0, b - y0), at the group velocity of the Kirchhoff plate at the
+// contact's own frequency omega_c = pi/t_contact: c_g = 2 (D*/(rho h))^{1/4} sqrt(omega_c) (D*
+// Olsson's effective stiffness; Graff, Wave Motion in Elastic Solids, 1975, §4.2: c_g = 2 c_p for
+// bending waves). Waves faster than that (higher frequencies) return earlier: a fact for
+// comparing with the contact time, not a bound.
+double flexural_return_time(const FinitePlate& p, double t_contact);
+
 // Number of excited modes (W(x0, y0)^2 >= kNodalShape) with omega <= omega_cut, without
 // storing them (the check above, and a cost estimate).
 std::size_t count_plate_modes(const FinitePlate& p, double omega_cut);

@@ -171,6 +171,18 @@ TEST(PlateModes, ResidualComplianceFollowsTheModalDensity) {
   }
 }
 
+// By hand for the 200 mm steel plate struck at its centre and a 47.13 us contact: d = 0.1 m,
+// omega = pi/47.13e-6 s, c_g = 2 (D/(rho h))^{1/4} sqrt(omega); a few operations: rounding.
+TEST(PlateModes, FlexuralReturnTimeByHand) {
+  const FinitePlate p = steel_plate(0.2, 0.2, 0.1, 0.1);
+  const double c_g =
+      2.0 * std::pow(p.bending.D11 / (7960.0 * 0.002), 0.25) * std::sqrt(pi / 47.13e-6);
+  EXPECT_NEAR(flexural_return_time(p, 47.13e-6) / (0.2 / c_g), 1.0, kRounding);
+  // the nearest edge counts: struck 30 mm from the edge x = 0
+  const FinitePlate off = steel_plate(0.2, 0.2, 0.03, 0.1);
+  EXPECT_NEAR(flexural_return_time(off, 47.13e-6) / (0.06 / c_g), 1.0, kRounding);
+}
+
 TEST(PlateModes, TooManyModesIsBadInputSayingHowMany) {
   const FinitePlate p = steel_plate(0.2, 0.2, 0.1, 0.1);
   try {
