@@ -117,7 +117,6 @@ struct PlateImpactResult {
   long steps = 0;              // integration steps (all contacts)
   long free_flight_steps = 0;  // bound/probe steps between contacts
   long rhs_evaluations = 0;
-  bool separated() const { return ok; }
 };
 
 // One impact of the scene's impactor on its finite plate ([structure] with length_x, length_y)

@@ -76,7 +76,8 @@ class PlateSystem {
       (G > 0.0 ? hi : lo) = F;
       double next = F - G / (1.0 + compliance_ * law_stiffness(z));
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - F) <= 4e-16 * std::abs(next) + 1e-300 || hi - lo <= 4e-16 * hi)
+      if (std::abs(next - F) <= 4e-16 * std::abs(next) + 1e-300 ||
+          hi - lo <= 4e-16 * std::max(std::abs(lo), std::abs(hi)))
         return next;
       F = next;
     }
