@@ -19,7 +19,7 @@ double parse_number(const std::string& s, const std::string& field) {
   errno = 0;
   const double v = blank_start ? 0.0 : std::strtod(s.c_str(), &end);
   const bool whole = !blank_start && end == s.c_str() + s.size() && end != s.c_str();
-  // out of range is named as such, not "not a finite number" (issue 21 item 14); a subnormal
+  // out of range is named as such, not "not a finite number" (as 1e-320 once was); a subnormal
   // (1e-320) is a number like any other, and the field's own range check judges it
   if (whole && errno == ERANGE && !(std::isfinite(v) && v != 0.0)) {
     throw InputError(field, "'" + s + "' is " +

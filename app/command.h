@@ -18,7 +18,7 @@ inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
 
 // --threads N (0: all cores), one definition for every command that runs in parallel. The text
-// must be a whole number in [0, kMaxThreads]: CLI11 alone reads '' as 0 (issue 21.14), and
+// must be a whole number in [0, kMaxThreads]: CLI11 alone reads '' as 0 (all cores), and
 // '' is bad input like '2x' (exit 2, through CLI11's validation error).
 inline constexpr int kMaxThreads = 1024;
 inline CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& help) {

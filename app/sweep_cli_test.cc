@@ -192,7 +192,7 @@ TEST(SweepCli, SidecarDescribesTheRun) {
       0);
   const auto j = nlohmann::json::parse(slurp(scratch("small.json")));
   EXPECT_EQ(j["law"], "elastoplastic");
-  // the defaults (issue 8): the model and the integrator are chosen per point
+  // the defaults: the model and the integrator are chosen per point
   EXPECT_EQ(j["integrator"], "auto");
   EXPECT_EQ(j["model"], "auto");
   EXPECT_EQ(j["grid"]["points"], 12);

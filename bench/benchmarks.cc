@@ -50,7 +50,7 @@ void register_all() {
                                  req)
         ->Unit(benchmark::kMicrosecond);
   }
-  // 1e-6, and 1e-8: the tolerance of the first speed target of issue 8
+  // 1e-6, and 1e-8: the tolerance of the paper-scene speed target (|de|/e <= 1e-8)
   for (const char* tol : {"1e-6", "1e-8"}) {
     for (IntegratorKind k : production_integrators()) {
       if (traits(k).fixed_step) continue;  // no tolerance to set

@@ -21,11 +21,11 @@ namespace ivv::bench {
 
 // Runs the suite: benchmark::Initialize(argc, argv) (so every --benchmark_* flag works),
 // RunSpecifiedBenchmarks, Shutdown. Returns 0, or 1 for an unrecognised argument.
-// Throws InputError first for a --benchmark_* value Google Benchmark would misuse (issue 21
-// item 12): --benchmark_min_time not a positive number of seconds (nan ran past 60 s) or
-// iterations, --benchmark_repetitions not in [1, 1000] (-5 failed in vector::reserve), and a
-// --benchmark_out that is not a regular file or new path in an existing directory (/dev/full
-// lost the output with exit 0).
+// Throws InputError first for a --benchmark_* value Google Benchmark would misuse (each was
+// passed through and misbehaved): --benchmark_min_time not a positive number of seconds (nan
+// ran past 60 s) or iterations, --benchmark_repetitions not in [1, 1000] (-5 failed in
+// vector::reserve), and a --benchmark_out that is not a regular file or new path in an
+// existing directory (/dev/full lost the output with exit 0).
 int run_benchmarks(int argc, char** argv);
 // The check above, on its own.
 void validate_benchmark_arguments(int argc, char** argv);

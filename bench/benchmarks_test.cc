@@ -1,4 +1,5 @@
-// validate_benchmark_arguments (benchmarks.h): issue 21 item 12's flags are bad input, named.
+// validate_benchmark_arguments (benchmarks.h): --benchmark_* values Google Benchmark would
+// misuse (nan, -5 repetitions, /dev/full) are bad input, named.
 #include "bench/benchmarks.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ std::string rejected(const std::string& arg) {
   return "";
 }
 
-TEST(BenchArguments, IssueFlagsAreBadInputNamingTheFlag) {
+TEST(BenchArguments, MisusedValuesAreBadInputNamingTheFlag) {
   EXPECT_EQ(rejected("--benchmark_min_time=nan"), "--benchmark_min_time");
   EXPECT_EQ(rejected("--benchmark_min_time=-1s"), "--benchmark_min_time");
   EXPECT_EQ(rejected("--benchmark_repetitions=-5"), "--benchmark_repetitions");

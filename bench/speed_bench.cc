@@ -96,8 +96,8 @@ double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, con
 }
 
 BenchTarget target(std::string name, double bound, std::string unit, double measured,
-                   std::string how, std::string issue = "8") {
-  BenchTarget t{std::move(issue), std::move(name), bound, std::move(unit),
+                   std::string how, std::string group) {
+  BenchTarget t{std::move(group), std::move(name), bound, std::move(unit),
                 measured,         false,           kNaN,  std::move(how)};
   if (!std::isnan(measured)) {
     t.ratio = measured / bound;
@@ -106,7 +106,7 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
   return t;
 }
 
-// Issue 19's speed figures: a two-parameter calibration (c, S_y of the damped paper scene)
+// The validation layer's speed: a two-parameter calibration (c, S_y of the damped paper scene)
 // to 50 synthetic impacts on one thread, and a 1e4-draw prediction band over 100 speeds on two.
 void calibration_targets(const BenchOptions& options, BenchReport& rep,
                          const std::function<void(const std::string&)>& say) {
@@ -137,7 +137,8 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
       "2-parameter calibration to 50 points, one thread", 1.0, "s", fit.ok ? runs[1] : kNaN,
       "c and S_y of the damped paper scene from synthetic data (u_e = 0.01), start 30-50 % off, "
       "linearised intervals (profile intervals off); median of 3; " +
-          std::to_string(fit.model_evaluations) + " impacts per fit"));
+          std::to_string(fit.model_evaluations) + " impacts per fit",
+      "calibration"));
   if (!fit.ok) return;
   PredictionOptions po;
   po.samples = options.quick ? 1000 : 10000;
@@ -152,10 +153,11 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
              band.ok() ? t * scale : kNaN,
              std::string(options.quick ? "1e3 draws scaled by 10; " : "") +
                  "Monte Carlo over the fitted covariance, --model auto at rtol 1e-10 (" +
-                 std::to_string(po.samples * 100) + " impacts)"));
+                 std::to_string(po.samples * 100) + " impacts)",
+             "calibration"));
 }
 
-// ---- issue 20's targets -------------------------------------------------------------------
+// ---- against the peers, the 300 x 300 map, the auto integrator ------------------------------
 
 // ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),
 // as ivv time / peer time: the target "ivv >= N x faster" is a bound 1/N on it.
@@ -179,14 +181,14 @@ void add_peer_ratio_targets(BenchReport& rep) {
              "ivv's fastest run (" + row->ivv_integrator +
                  ") / odeint-dopri5-dense's fastest, both "
                  "reaching the level, measured in this run (peers: verification/peers.h)",
-             "20"));
+             "peers"));
   rep.targets.push_back(
       target("ivv >= 25x faster than CVODE" + at, 0.04, "ratio", row->ivv_us / cvode,
              "ivv's fastest run (" + row->ivv_integrator +
                  ") / the faster of CVODE Adams and BDF (" + (adams_faster ? "Adams" : "BDF") +
                  ") reaching the level, each with its own root "
                  "finding, measured in this run",
-             "20"));
+             "peers"));
 }
 
 // The median of three runs of the map through SweepSink (journal, partial CSV, the CSV written
@@ -211,7 +213,7 @@ double time_map_with_csv(const SweepRequest& sweep, int threads, int* failed) {
   return runs[1];
 }
 
-// Issue 20's map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
+// The large map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
 // --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
 // scaled to 90000 points.
 void add_map_targets(BenchReport& rep, bool quick) {
@@ -234,18 +236,19 @@ void add_map_targets(BenchReport& rep, bool quick) {
       target("300 x 300 COR map with its CSV at rtol 1e-8, --model auto, one thread", 0.4, "s", one,
              grid + "run_sweep_points into a SweepSink (journal, CSV), median of 3; " +
                  std::to_string(failed_one) + " failed points (a failed point counts as a miss)",
-             "20"));
+             "map"));
   if (failed_one > 0) rep.targets.back().met = false;
   rep.targets.push_back(target(
       "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
       grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
-      "20"));
+      "map"));
 }
 
 // --integrator auto against the fastest fixed integrator at every point of a grid that holds
-// the heavily damped scenes of issue 20 (zeta 8 and 16), elastoplastic, --model full (the
-// choice is of an integrator), rtol = atol = 1e-8. The fixed candidates: every production
-// integrator with error control (rk4 has none). A fixed run that fails is no candidate.
+// heavily damped scenes (zeta 8 and 16, where a stiffness ratio once chose the slower rodas4),
+// elastoplastic, --model full (the choice is of an integrator), rtol = atol = 1e-8. The fixed
+// candidates: every production integrator with error control (rk4 has none). A fixed run that fails
+// is no candidate.
 void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timing) {
   const std::vector<double> v0s =
       quick ? std::vector<double>{1.0, 5.0} : std::vector<double>{0.3, 1.0, 5.0};
@@ -289,9 +292,10 @@ void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timi
       << worst.v0 << " m/s, zeta = " << worst.zeta << ": auto chose " << worst.auto_integrator
       << ", fastest " << worst.best_integrator << " (auto_grid in the JSON)";
   if (worst_failed) how << "; auto's run or every fixed run failed there";
-  rep.targets.push_back(target(
-      "--integrator auto within 1.25x of the best fixed integrator", 1.25, "ratio",
-      worst_failed ? std::numeric_limits<double>::infinity() : worst.ratio, how.str(), "20"));
+  rep.targets.push_back(target("--integrator auto within 1.25x of the best fixed integrator", 1.25,
+                               "ratio",
+                               worst_failed ? std::numeric_limits<double>::infinity() : worst.ratio,
+                               how.str(), "auto-choice"));
 }
 
 }  // namespace
@@ -381,9 +385,9 @@ BenchReport run_bench(const BenchOptions& options,
   rep.targets.push_back(target(
       "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
       "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
-      "8, 20"));
+      "per-impact"));
   rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
-                               "fastest point with err_e <= 1e-12 (" + who12 + ")"));
+                               "fastest point with err_e <= 1e-12 (" + who12 + ")", "per-impact"));
   {
     const Scene s = paper_at(1.0, 0.1);
     const DerivedParameters p = derive(s);
@@ -400,15 +404,16 @@ BenchReport run_bench(const BenchOptions& options,
     rep.targets.push_back(target("linearized closed form", 0.3, "us", sink != 0 ? us : kNaN,
                                  "oracles::solve_linear_model on the paper scene, median of "
                                  "batches of 1000 calls",
-                                 "8, 20"));
+                                 "per-impact"));
   }
   const double ts = best_us(rep.points, scene_label(1.0, verification::kStiffSceneZeta),
                             "elastoplastic", 1e-6, true, &whos);
   rep.targets.push_back(target("zeta = 100 within 1e-6", 100.0, "us", ts,
                                "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
-                                   "), elastoplastic, against dop853 at 1e-13"));
+                                   "), elastoplastic, against dop853 at 1e-13",
+                               "per-impact"));
   {
-    // The COR map of issue 8 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
+    // The 200 x 50 COR map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
     // run_sweep, the sweep's own parallel loop: --model auto with --integrator auto on one and
     // on two threads, and the full model (dop853) on one thread for the "auto is never slower"
     // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts. Each timing is the
@@ -448,17 +453,20 @@ BenchReport run_bench(const BenchOptions& options,
     rep.targets.push_back(target(
         "200 x 50 COR map at rtol 1e-8, --model auto, one thread", 0.1, "s", t_auto,
         grid + "run_sweep, median of 3; " + std::to_string(failed_auto) +
-            " failed points (a failed point counts as a miss: the target asks for every point)"));
+            " failed points (a failed point counts as a miss: the target asks for every point)",
+        "map"));
     if (failed_auto > 0) rep.targets.back().met = false;
     rep.targets.push_back(target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio",
                                  t_two / t_auto,
                                  grid + "two-thread time / one-thread time (" +
-                                     std::to_string(failed_two) + " failed points)"));
+                                     std::to_string(failed_two) + " failed points)",
+                                 "map"));
     rep.targets.push_back(target("--model auto never more than 10% slower than the full model",
                                  1.10, "ratio", t_auto / t_full,
                                  grid + "auto / full (elastoplastic, dop853) on the same map, one "
                                         "thread; the per-point error check is the case "
-                                        "autochoice.model"));
+                                        "autochoice.model",
+                                 "map"));
   }
   say("bench: the speed targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
   add_peer_ratio_targets(rep);
@@ -508,7 +516,7 @@ std::string to_json(const BenchReport& r) {
                               {"ratio", num(a.ratio)}});
   j["targets"] = nlohmann::json::array();
   for (const auto& t : r.targets)
-    j["targets"].push_back({{"issue", t.issue},
+    j["targets"].push_back({{"group", t.group},
                             {"target", t.name},
                             {"bound", t.bound},
                             {"unit", t.unit},
@@ -563,7 +571,7 @@ std::string to_text(const BenchReport& r) {
        << (std::isnan(t.measured) ? "n/a "
            : t.met                ? "pass"
                                   : "MISS")
-       << "  [issue " << t.issue << "] " << t.name << ": target <= " << t.bound << " " << t.unit
+       << "  [" << t.group << "] " << t.name << ": target <= " << t.bound << " " << t.unit
        << ", measured " << std::setprecision(3) << t.measured << " " << t.unit;
     if (!std::isnan(t.ratio)) os << " (x" << t.ratio << " of the target)";
     os << "\n        " << t.how << "\n";

@@ -1,5 +1,5 @@
 // `ivv bench`: speed against error for every integrator and law, with the peers measured in
-// the same run and the targets of issues 8 and 20 printed beside the measured figures.
+// the same run and the speed targets printed beside the measured figures.
 //
 // Scenes: the paper scene (Table 1) at v0 in {0.1, 1, 5} m/s and zeta in {0, 0.1}, and a stiff
 // scene (v0 = 1 m/s, zeta = 100: the dashpot time scale 1/(2 zeta) in tau is 200 times shorter
@@ -23,12 +23,12 @@
 // peer_setups): GSL rk8pd behind its driver, odeint's dense dopri5, SUNDIALS CVODE Adams and
 // BDF and ARKODE ERK with their own root finding, on the paper scene at v0 = 1 m/s, zeta = 0.1.
 //
-// Issue 20's targets, measured in the same run: the paper scene at |de|/e <= 1e-8 (time, and
-// ivv's time over odeint's and over the faster CVODE's at that level); the 300 x 300 map (v0
-// 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto, --integrator auto) through
-// SweepSink with its journal and CSV, wall clock on one and two threads (--quick: 60 x 30,
-// scaled); --integrator auto against the fastest fixed integrator on every point of a grid with
-// the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
+// The targets against the peers, the large map and the auto choice, measured in the same run: the
+// paper scene at |de|/e <= 1e-8 (time, and ivv's time over odeint's and over the faster CVODE's at
+// that level); the 300 x 300 map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
+// --integrator auto) through SweepSink with its journal and CSV, wall clock on one and two threads
+// (--quick: 60 x 30, scaled); --integrator auto against the fastest fixed integrator on every point
+// of a grid with the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
 //
 // Timings are never pass/fail; quote ratios measured in one run, with `machine`.
 #pragma once
@@ -51,7 +51,7 @@ using verification::RatioRow;
 using verification::SpeedPoint;
 
 struct BenchTarget {
-  std::string issue;   // the issue that set it ("8", "20", "8, 20")
+  std::string group;   // what it measures: per-impact, peers, map, auto-choice, calibration
   std::string name;    // what the target says
   double bound = 0.0;  // the target [us] (or [s] for the map)
   std::string unit;
@@ -65,7 +65,7 @@ struct BenchOptions {
   bool quick = false;
 };
 
-// One point of the --integrator auto grid (issue 20): auto's time against the fastest fixed
+// One point of the --integrator auto grid: auto's time against the fastest fixed
 // integrator's on the same request (elastoplastic, --model full, rtol = atol = 1e-8).
 struct AutoPoint {
   double v0 = 0.0, zeta = 0.0;  // [m/s], [-]

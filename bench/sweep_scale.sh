@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sweep at scale (issue 9 §4): wall time and peak memory of `ivv sweep` over an NV x NZ grid of
+# Sweep at scale: wall time and peak memory of `ivv sweep` over an NV x NZ grid of
 # the paper scene (v0 0.05-20 m/s log, zeta 0-2: rebounds, captures and the stiff corners, so
 # point costs vary ~100x), on 1 and 2 threads and on 1 and 2 MPI ranks (1 thread each).
 # A benchmark, not a test: timings depend on the machine and its load.

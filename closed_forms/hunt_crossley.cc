@@ -21,9 +21,10 @@ void require_target(double e) {
 // it the Lambert-W form is already within a few ulps (its error is ~eps/u0^2).
 constexpr double kPolishMaxU0 = 1.0;
 // ... and above this one: the polish divides by the slope -e u0^2/(1 - e u0), which underflows
-// (to 0 below u0 ~ 1e-162, giving e = 0/0 = NaN, issue 21 item 2) or loses digits in the
-// subnormal range well before; at u0 = 1e-4 it is 1e-8, a normal number, and below it the
-// series' truncation, |c9| u0^9 < 1e-36, leaves nothing to polish.
+// (to 0 below u0 ~ 1e-162, giving e = 0/0 = NaN: `simulate --law hunt-crossley --hc-mu 1e-200`
+// printed "separated, e = -nan") or loses digits in the subnormal range well before; at u0 = 1e-4
+// it is 1e-8, a normal number, and below it the series' truncation, |c9| u0^9 < 1e-36, leaves
+// nothing to polish.
 constexpr double kPolishMinU0 = 1e-4;
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "oracles/hertz.h"
 #include "scene/input_error.h"
+#include "solver/simulate.h"
 
 namespace ivv::oracles {
 namespace {
@@ -60,7 +61,7 @@ TEST(HuntCrossley, SmallDampingLimit) {
   EXPECT_EQ(hunt_crossley_cor(0.0), 1.0);
 }
 
-// Issue 21 item 2: at u0 = mu v0 ~ 1e-165 the Newton polish divided 0 by an underflowed slope
+// At u0 = mu v0 ~ 1e-165 the Newton polish divided 0 by an underflowed slope
 // and `simulate --law hunt-crossley --hc-mu 1e-200` printed "separated, e = -nan". Down to the
 // smallest subnormal u0 the COR is 1 - (2/3) u0 to round-off, i.e. 1.
 TEST(HuntCrossley, TinyDampingIsFiniteNotNaN) {
@@ -70,6 +71,20 @@ TEST(HuntCrossley, TinyDampingIsFiniteNotNaN) {
     EXPECT_TRUE(std::isfinite(e)) << u0;
     EXPECT_NEAR(e, 1.0, kRoundOff) << u0;
   }
+}
+
+// The same through the solver: `simulate --law hunt-crossley --hc-mu 1e-200` (model auto, so
+// the Lambert-W route) printed "separated, e = -nan".
+TEST(HuntCrossley, SimulateAtTinyDampingSeparatesWithEOfOne) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.law = LawKind::hunt_crossley;
+  req.parameters = {{"mu", 1e-200}};
+  req.model = ModelKind::automatic;
+  const ImpactResult r = simulate(req);
+  ASSERT_TRUE(r.separated()) << r.reason;
+  // e = 1 - (2/3) mu v0 to round-off: exactly elastic at mu v0 = 1e-200
+  EXPECT_EQ(r.e, 1.0);
 }
 
 TEST(HuntCrossley, LargeDampingLimit) {

@@ -90,7 +90,7 @@ constexpr double kDirectIntegralMaxRatio = 0.5;
 // With X = (w'(0) + a w(0))/b, A e^{i phi} = X + i w(0), so e^{i phi} = (X + i w0)/A and
 // e^{2 i phi} its square; e^{2pT} = (e^{pT})^2 and 1/p = conj(p)/|p|^2. e^{pT} = e^{-aT}
 // (cos bT + i sin bT) is the caller's, who knows it from the phase's end without a sin, cos
-// or exp (the linearized closed form is a benchmark target, issue 20).
+// or exp (the linearized closed form is timed by `ivv bench` against a target of 0.3 us).
 // Any regime, identities of the phase equation (multiply it by 1, by w', by w, integrate):
 //   K integral w ds   = m [(w'(0) - w'(T)) + 2a (w(0) - w(T))]
 //   W_v = 2aK integral w^2 = m (E(0) - E(T)) - 2 m a [w w']_0^T - 2 m a^2 [w^2]_0^T,

@@ -76,7 +76,7 @@ UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v
   // E0 - E_y so that those terms cancel: the elastic leg as the Hertz half-time less the part
   // beyond u_y = E_y/E0 = (z_y/z_H)^{5/2}, B(u; 2/5, 1/2) = B(2/5, 1/2) - B(1 - u; 1/2, 2/5)
   // with 1 - u_y = (E0 - E_y)/E0. (Evaluating u_y on its own put t_F_max 1.3e-8 and t_f 6.7e-9
-  // off mp50 at v0 = 0.13085169358677584 m/s on the paper scene, issue 21 item 7.)
+  // off mp50 at v0 = 0.13085169358677584 m/s on the paper scene, against a stated rtol/10.)
   const double z_H = hertz_z_max(m, K_h, v0);
   // (far above yield, u_y -> 0, the direct form avoids the opposite cancellation)
   const double x_y = (E0 - E_y) / E0;

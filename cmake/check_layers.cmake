@@ -1,14 +1,15 @@
 # The layer rule of docs/design.md §4, checked on the source tree (a ctest entry: layers_test):
 #
-#   scene < closed_forms < solver < oracles < validation < verification < reports < app
+#   scene < closed_forms < solver < oracles < validation < verification < reports < app < python
 #
 # A file in one layer may include headers of its own layer and of the layers below it, never of
 # a layer above. bench/ and fuzz/ are leaves: no library includes them; only the command line
-# (app/, for `ivv bench`) may. Tests (*_test.cc) sit beside the unit they check and may use
-# any layer to check it.
+# (app/, for `ivv bench`) may. python/ (the module `import ivv`) is the top layer: it may use
+# every library, and nothing includes it. Tests (*_test.cc) sit beside the unit they check and
+# may use any layer to check it.
 #
 # Usage: cmake -DSOURCE_DIR=<tree> -P check_layers.cmake   (fails listing every violation)
-set(layers scene closed_forms solver oracles validation verification reports app)
+set(layers scene closed_forms solver oracles validation verification reports app python)
 set(leaves bench fuzz)
 
 set(violations "")

@@ -23,7 +23,7 @@ set_target_properties(ivv_scene PROPERTIES EXPORT_NAME scene)
 set_target_properties(ivv_closed_forms PROPERTIES EXPORT_NAME closed_forms)
 # An instrumented build (the asan preset's -fsanitize=address,undefined in CMAKE_CXX_FLAGS)
 # installs instrumented objects: whoever links them needs the sanitizer runtimes, so the
-# installed targets carry the same -fsanitize= as a link option (issue 21 item 15: the
+# installed targets carry the same -fsanitize= as a link option (without it `make asan`'s
 # downstream project failed with "undefined reference to __asan_init"). fuzzer-no-link is a
 # compile-only instrumentation and is not passed on.
 string(REGEX MATCHALL "-fsanitize=[^ ]+" ivv_sanitize_flags "${CMAKE_CXX_FLAGS}")

@@ -1,6 +1,7 @@
 // Fuzz target: the expression compiler (solver/laws/expression.h) for --force and --expect-cor.
 // The first byte picks which; the rest is the expression text (the paper scene's constants).
-// Contract (issue 21 items 3, 5 and 14): any text either compiles into one expression (never
+// Contract (a NaN claim, a decimal comma and 1e400 each once got through as something else):
+// any text either compiles into one expression (never
 // muParser's comma list, whose earlier parts would be ignored), whose evaluation is a finite
 // number or is recorded as non-finite by the law, or is rejected with an InputError naming the
 // flag; nothing else escapes (no muParser exception, no crash).

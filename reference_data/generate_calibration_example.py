@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""SYNTHETIC calibration example for `ivv calibrate` / `ivv predict` (issue 19).
+"""SYNTHETIC calibration example for `ivv calibrate` / `ivv predict`.
 
 No digitised experimental COR data is at hand, so this example is generated, not measured:
 e(v0) of the scene `paper-damped` (the paper's Table 1: 0.5 kg steel sphere, R = 10 mm, on a

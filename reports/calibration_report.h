@@ -1,4 +1,4 @@
-// HTML for a calibration (issue 19, item 4): `ivv calibrate --report DIR` writes it as a whole
+// HTML for a calibration: `ivv calibrate --report DIR` writes it as a whole
 // page (DIR/index.html, DIR/calibration.json), and the main report shows the shipped example
 // through the same section.
 //

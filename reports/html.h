@@ -21,7 +21,8 @@ std::string number_html(double v, int digits = 4);
 // An id/anchor-safe version of `text`: [A-Za-z0-9_-] kept, everything else becomes '-'.
 std::string slug(std::string_view text);
 
-// Where the numbers of a figure or a table come from (issue 10): every number the report shows
+// Where the numbers of a figure or a table come from (the report once ran its own simulations,
+// unchecked by any case): every number the report shows
 // is a verification case's measurement, or it is labelled, visibly, as an illustration or as a
 // timing (information only, never pass/fail). Rendered as the attribute data-source on the
 // <figure> or <table> and as a visible label; a figure or table whose Source was never set

@@ -4,6 +4,7 @@
 #include <optional>
 #include <sstream>
 
+#include "solver/infinite_plate_check.h"
 #include "solver/plate/plate_modes.h"
 
 namespace ivv {
@@ -161,7 +162,11 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
     request["hc_k"] = request["parameters"]["K"];
     request["hc_mu"] = request["parameters"]["mu"];
   }
-  return {{"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
+  nlohmann::json j = {
+      {"scene", scene_json(req.scene, p)}, {"request", request}, {"result", result_json(r)}};
+  // where the scene's idealisation stops (solver/infinite_plate_check.h): absent when none
+  if (auto w = infinite_plate_warnings(req.scene, r); !w.empty()) j["warnings"] = w;
+  return j;
 }
 
 nlohmann::json model_choice_json(const ModelChoice& c, ModelKind model) {

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "solver/infinite_plate_check.h"
 #include "solver/plate/plate_modes.h"
 
 namespace ivv {
@@ -65,6 +66,8 @@ std::string impact_summary(const SimulationRun& run) {
   if (!r.reason.empty()) out << ": " << r.reason;
   out << "\n";
   if (r.ok()) outcome_lines(out, req, r, p);
+  for (const std::string& w : infinite_plate_warnings(req.scene, r))
+    out << "  warning      " << w << "\n";
   if (run.choice && req.model == ModelKind::automatic)
     out << "  model        " << run.choice->brief() << "; --model full to integrate always\n";
   return out.str();

@@ -549,7 +549,8 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
 
   out +=
       "<h3>Hard cases</h3>\n<p>Each integrator with its defaults (rtol 1e-10; rk4 dt = 1e-3 "
-      "in τ) on the hard scenes of docs/design.md §6: status, e, accepted steps and the wall time of "
+      "in τ) on the hard scenes of docs/design.md §6: status, e, accepted steps and the wall time "
+      "of "
       "the one run (information only: measured while other cases may run on other threads, "
       "never judged). A solver that cannot meet its tolerance must say so (status failed), "
       "never return a silently wrong COR.</p>\n";
@@ -720,7 +721,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   so.say("writing index.html, results.json, series.csv, junit.xml to " + opt.out_dir.string());
   {
     // all four written first, then renamed into place: a full disk or any write error leaves
-    // none of them (issue 21 item 13 found results.json without index.html)
+    // none of them (a full disk once left results.json without index.html)
     StagedFile results(opt.out_dir / "results.json",
                        [&](std::ostream& os) { os << results_json(records); });
     StagedFile series(opt.out_dir / "series.csv",

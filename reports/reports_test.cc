@@ -236,7 +236,7 @@ TEST(WriteReport, RejectsAFilterMatchingNoCase) {
   fs::remove_all(o.out_dir);
 }
 
-// Issue 10: every figure and table of the rendered report either names the verification
+// Every figure and table of the rendered report either names the verification
 // case(s) whose measurements it shows (ids that exist, or globs that match some) or carries a
 // visible "Illustration" / "Timing, information only" label. A figure or table added without a
 // Source renders data-source="unstated" and fails here.

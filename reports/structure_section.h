@@ -1,5 +1,5 @@
-// The report's section "Damping from the structure" (issue 18), drawn from the structure study
-// (verification/study_structure.h), the data the structure.* cases judge. Nothing here
+// The report's section "Damping from the structure" (docs/design.md §1), drawn from the structure
+// study (verification/study_structure.h), the data the structure.* cases judge. Nothing here
 // simulates: it formats.
 //
 //   * e against Zener's lambda for the Hertz law (simulated curve), with the small-lambda

@@ -161,7 +161,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "impactor.mass"},
         BadScene{"zero_zeta", replace(kGoodScene, "zeta = 0.1", "zeta = 0"), "damping.zeta"},
         BadScene{"syntax", replace(kGoodScene, "[impact]", "[impact"), "bad.toml"},
-        // issue 10: finite inputs whose derived parameters or scales are not representable
+        // finite inputs whose derived parameters or scales are not representable
         // ended in a TOMS 748 message or inf/nan on stdout; the field at fault is named
         BadScene{"mass_1e308", replace(kGoodScene, "mass = 0.5", "mass = 1e308"), "impactor.mass"},
         BadScene{"modulus_1e_320",
@@ -273,7 +273,7 @@ TEST(SceneParser, MissingFileIsInputError) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
 }
 
-// Issue 10: a directory said "missing section"; /dev/zero was read without bound.
+// A directory said "missing section"; /dev/zero was read without bound (4 GB in 5 s).
 TEST(SceneParser, DirectoryAndEndlessFilesAreRefusedByName) {
   try {
     load_scene("/tmp");
@@ -289,7 +289,7 @@ TEST(SceneParser, DirectoryAndEndlessFilesAreRefusedByName) {
   }
 }
 
-// Issue 21 item 11: `mkfifo f.toml; ivv simulate --scene f.toml` blocked for ever.
+// `mkfifo f.toml; ivv simulate --scene f.toml` blocked for ever.
 TEST(SceneParser, FifoIsRefusedWithoutBlocking) {
   const std::filesystem::path fifo =
       std::filesystem::temp_directory_path() / ("ivv_scene_fifo_" + std::to_string(getpid()));
@@ -305,7 +305,7 @@ TEST(SceneParser, FifoIsRefusedWithoutBlocking) {
   std::filesystem::remove(fifo);
 }
 
-// Issue 21 item 14: `name = 42` and names with control characters were accepted.
+// `name = 42` and names with control characters were accepted.
 TEST(SceneParser, NameMustBeAPrintableString) {
   const std::string body =
       "[impactor]\nmass = 0.5\nradius = 0.01\nyoungs_modulus = 207e9\npoisson_ratio = 0.3\n"

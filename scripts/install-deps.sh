@@ -20,6 +20,8 @@ packages=(
   gnuplot-nox                         # report plots (SVG terminal)
   chromium fonts-dejavu-core          # the report's rendering test (headless), with a font
   openmpi-bin libopenmpi-dev          # `mpirun -np N ivv sweep` (and its 2-rank test)
+  pybind11-dev python3-dev python3-numpy  # the Python module `import ivv` (python/)
+  python3-pytest                      # its tests
 )
 
 missing=()

@@ -1,5 +1,5 @@
-// Heap allocations per impact on the hot path (issue 8, part 1), counted by replacing the
-// global operator new in this test binary and running simulate() without a trajectory.
+// Heap allocations per impact on the hot path (none beyond the result's own), counted by replacing
+// the global operator new in this test binary and running simulate() without a trajectory.
 //
 // The bound: an impact returns ImpactResult, whose `events` vector must own its storage, and
 // the driver keeps its own event list in normalised units (reserved once for every event an
@@ -22,7 +22,7 @@ std::atomic<long> g_allocations{0};
 // The replacements pair std::malloc with std::free. With -fsanitize=address (make asan) GCC
 // inlines them into callers and then warns -Wmismatched-new-delete that a pointer from
 // operator new reaches std::free: a false positive for a replaced operator new built on malloc
-// (issue 21 item 15), silenced for these definitions only.
+// (three of them broke the warning-free `make asan` build), silenced for these definitions only.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t n) {

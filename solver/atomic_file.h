@@ -1,5 +1,5 @@
-// Output files appear whole or not at all (docs/design.md §7): content is written to a temporary file
-// in the destination's directory and renamed over the destination (rename is atomic on POSIX
+// Output files appear whole or not at all (docs/design.md §7): content is written to a temporary
+// file in the destination's directory and renamed over the destination (rename is atomic on POSIX
 // within one file system). On any error the temporary is removed and InputError/runtime_error
 // is thrown, leaving no partial file.
 //
@@ -56,7 +56,7 @@ class StagedFile {
 };
 
 // Removes the temporaries of `path` (".NAME.tmpPID-N" in its directory) left by a process that
-// no longer runs (killed while writing: issue 21 item 9 found tens of MB left by a SIGKILL).
+// no longer runs (a sweep killed by SIGKILL while copying its CSV left tens of MB behind).
 // A temporary of a live process, or of a PID that this process cannot probe, is kept. Returns
 // how many were removed.
 std::size_t remove_stale_temporaries(const std::filesystem::path& path);

@@ -56,7 +56,8 @@ TEST_F(AtomicFile, NewPathIsWritten) {
   EXPECT_EQ(slurp(dir_ / "a.csv"), "hello");
 }
 
-// Issue 10 item 1: a symlink used to be replaced by a regular file, its target left stale.
+// A symlink given as --out or --trajectory used to be replaced by a regular file, its target
+// left stale.
 TEST_F(AtomicFile, SymlinkIsFollowedAndKept) {
   write(dir_ / "target.csv", "old");
   fs::create_symlink("target.csv", dir_ / "link.csv");
@@ -89,7 +90,7 @@ TEST_F(AtomicFile, ExistingFileKeepsItsPermissions) {
             fs::perms::owner_read | fs::perms::owner_write);
 }
 
-// Issue 10 item 1: a device node was replaced by a regular file (as root, a system file).
+// A device node (/dev/stdout, /dev/full) was replaced by a regular file (as root, a system file).
 TEST_F(AtomicFile, DeviceIsRejectedAndLeftAlone) {
   EXPECT_EQ(rejected_field("/dev/null", "--trajectory"), "--trajectory");
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
@@ -104,7 +105,7 @@ TEST_F(AtomicFile, FifoIsRejected) {
   EXPECT_EQ(rejected_field(dir_ / "fifo"), "--out");
 }
 
-// Issue 21 item 10: `sweep --out /dev/stdout | cat` ran the whole sweep, then failed: the
+// `sweep --out /dev/stdout | cat` ran the whole sweep, then failed: the
 // magic link /proc/self/fd/N reads as "pipe:[...]", which looked like a new file in /proc.
 TEST_F(AtomicFile, PipeBehindAMagicLinkIsRejectedBeforeAnyWork) {
   int fds[2];
@@ -115,7 +116,7 @@ TEST_F(AtomicFile, PipeBehindAMagicLinkIsRejectedBeforeAnyWork) {
   close(fds[1]);
 }
 
-// Issue 21 item 9: a run killed while writing left ".NAME.tmpPID-N" for ever.
+// A run killed while writing left ".NAME.tmpPID-N" for ever (tens of MB for a large sweep).
 TEST_F(AtomicFile, TemporariesOfDeadProcessesAreRemovedOthersKept) {
   const pid_t child = fork();
   if (child == 0) _exit(0);

@@ -1,7 +1,8 @@
 // settle_captured (capture_end_state.h) by regime: captured without turning back, captured
 // after turning back, rate-dependent law without a dashpot, free target, not captured; and the
-// end state of real captured runs (issue 21 item 1): `simulate --scene paper --v0 10 --zeta 2`
-// reported the impulse, energy and times at the moment capture was declared.
+// end state of real captured runs: `simulate --scene paper --v0 10 --zeta 2` reported the
+// impulse, energy and times at the moment capture was declared (impulse 0.677 N s where the end
+// state's is m* v0 = 5 N s, final energy 18.69 of 25 J), different for every integrator.
 #include "solver/capture_end_state.h"
 
 #include <gtest/gtest.h>
@@ -113,10 +114,10 @@ TEST(CaptureEndState, SeparatedResultUnchanged) {
   EXPECT_EQ(r.energy.final, 0.0625);
 }
 
-// Issue 21 item 1: the issue's command through the library, with every integrator that runs
-// a stiff scene in reasonable time. The end state is m* v0 exactly (a product), final energy
+// That command (paper scene, v0 = 10 m/s, zeta = 2) through the library, with every integrator that
+// runs a stiff scene in reasonable time. The end state is m* v0 exactly (a product), final energy
 // 0, and the ledger closes to the consistency bound the run passed (consistency.h).
-TEST(Issue21, CapturedImpactReportsItsEndState) {
+TEST(CapturedImpact, ReportsItsEndStateWithEveryIntegrator) {
   SimulationRequest req;
   req.scene = paper_scene();
   req.scene.velocity = 10.0;

@@ -58,8 +58,9 @@ std::string consistency_failure(const ConsistencyMeasures& m, const IntegratorOp
 // A result whose status says it succeeded (separated or captured) but which carries a number
 // that is not finite (NaN; or +-inf, except t_contact and t_alpha_max, which are +inf exactly
 // when a captured impact never ends or the impactor never turns back) becomes a failure whose
-// reason names the field and `what` produced it (issue 21 item 2: e = NaN printed as a
-// separated result). A failed result is left as it is. Returns true when it changed `r`.
+// reason names the field and `what` produced it (a Hunt-Crossley run at mu = 1e-200 printed
+// e = NaN as a separated result). A failed result is left as it is. Returns true when it
+// changed `r`.
 bool fail_non_finite_outcome(ImpactResult& r, std::string_view what);
 
 }  // namespace ivv

@@ -59,7 +59,7 @@ struct LocatorOptions {
 // secant through the ends, the end that stays having its value scaled by 1 - g(c)/g(new end)
 // (1/2 when that is not positive), so that neither end sticks (Anderson & Bjorck, BIT 13:253,
 // 1973). Superlinear on a smooth root at one g and a few flops a step, where TOMS 748's
-// cubic and quadratic steps cost more than the g of an interpolant (issue 20: TOMS 748's own
+// cubic and quadratic steps cost more than the g of an interpolant (profiled, TOMS 748's own
 // arithmetic was ~10 % of a sweep's instructions). The final bracket, or nullopt when g was
 // not a number somewhere or `limit` steps did not resolve it: the caller then solves the
 // bracket by TOMS 748 as before.

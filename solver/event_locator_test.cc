@@ -85,7 +85,7 @@ TEST(EventLocator, NoCrossingWhenStartIsAlreadyPastTheEvent) {
   EXPECT_FALSE(locate_first_crossing(g, 0.0, 1.0, g(0.0), Direction::falling));
 }
 
-// Issue 10 item 7: TOMS 748 out of iterations was never checked; the event was placed at
+// TOMS 748 out of iterations was never checked; the event was placed at
 // the unconverged bracket's end without a word.
 TEST(EventLocator, OutOfIterationsIsAnError) {
   auto g = [](double t) { return std::cos(t); };

@@ -1,5 +1,6 @@
-// Regression tests of issue 10: no silent wrong number, every failure named with a reason.
-// One test per finding; each fails without its fix.
+// Run failures: no silent wrong number, every failure named with a reason (and its code).
+// One test per finding of an adversarial pass over every law and integrator; each fails
+// without its fix.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -15,7 +16,7 @@
 namespace ivv {
 namespace {
 
-// Item 3: dopri5, rosenbrock4 and msbdf declared "captured" (e = 0) at v0 = 1e16 m/s without a
+// dopri5, rosenbrock4 and msbdf declared "captured" (e = 0) at v0 = 1e16 m/s without a
 // dashpot, where the closed form gives e = 6.5e-5. Round-off in the stored energy of the
 // unloading branch (a difference of terms sqrt(z_m/z_y) ~ 1e8 times E0) drove the capture
 // bound below 1e-9. Without a dashpot nothing dissipates after maximum compression: the run
@@ -27,7 +28,8 @@ TEST(RunFailures, NoCaptureWithoutADashpot) {
   req.integrator = IntegratorKind::gsl_rk8pd;  // the eighth-order run is the reference
   const ImpactResult ref = simulate(req);
   ASSERT_TRUE(ref.separated()) << ref.reason;
-  ASSERT_NEAR(ref.e, 6.5e-5, 0.05e-5);  // the issue's closed-form value, to its 2 digits
+  ASSERT_NEAR(ref.e, 6.5e-5,
+              0.05e-5);  // the closed form's value as first reported, to its 2 digits
   for (IntegratorKind k : all_integrators()) {
     if (k == IntegratorKind::mp50 || k == IntegratorKind::rk4) continue;  // slow at this scale
     req.integrator = k;
@@ -43,7 +45,7 @@ TEST(RunFailures, NoCaptureWithoutADashpot) {
   }
 }
 
-// Item 2: rk4 at its default step resolves the loading of this scene (m = 1000 kg,
+// rk4 at its default step resolves the loading of this scene (m = 1000 kg,
 // R = 0.1 um, v0 = 1000 m/s) but not the unloading, which is (z_m/z_y)^{1/4} ~ 300 times
 // faster: e came out 8 % low with status "separated". The CORs disagree far beyond the
 // tolerance: a failure with the reason.
@@ -80,7 +82,7 @@ TEST(RunFailures, ConsistencyCheckNamesWhatDisagreed) {
   m.restitution_steps = 5;
   m.e = 0.000549;
   m.e_poisson = 0.000549;
-  m.e_energetic_sq = 0.000618 * 0.000618;  // the issue's rk4 run
+  m.e_energetic_sq = 0.000618 * 0.000618;  // the rk4 run that came out 8 % low
   EXPECT_NE(consistency_failure(m, opt, "rk4").find("energetic"), std::string::npos);
   m.e_energetic_sq = m.e * m.e;
   EXPECT_EQ(consistency_failure(m, opt, "rk4"), "");
@@ -90,7 +92,7 @@ TEST(RunFailures, ConsistencyCheckNamesWhatDisagreed) {
   EXPECT_NE(consistency_failure(m, opt, "rk4").find("ledger"), std::string::npos);
 }
 
-// Item 5: near the capture boundary the force reaches zero while the impactor still
+// Near the capture boundary the force reaches zero while the impactor still
 // approaches at +1e-13 v0, within the integration error: that is capture (e = 0) with the
 // bound, not a failure.
 TEST(RunFailures, GrazingCaptureIsCapture) {
@@ -120,7 +122,7 @@ TEST(RunFailures, GrazingCaptureIsCapture) {
   EXPECT_LE(exact.t_contact, r.t_contact);
 }
 
-// Item 7: TOMS 748 out of iterations was never checked.
+// TOMS 748 out of iterations was never checked.
 TEST(RunFailures, RootFinderOutOfIterationsFailsTheRun) {
   for (IntegratorKind k : {IntegratorKind::odeint_dopri5, IntegratorKind::gsl_rk8pd}) {
     SimulationRequest req;
@@ -134,7 +136,7 @@ TEST(RunFailures, RootFinderOutOfIterationsFailsTheRun) {
   }
 }
 
-// Item 7: a failed result always carries a reason (an unknown integrator returned {}).
+// A failed result always carries a reason (an unknown integrator returned {}).
 TEST(RunFailures, FailedSimulationAlwaysHasAReason) {
   SimulationRequest req;
   req.scene = paper_scene();
@@ -145,7 +147,7 @@ TEST(RunFailures, FailedSimulationAlwaysHasAReason) {
   EXPECT_FALSE(r.reason.empty());
 }
 
-// Item 7: the field of a bad option used to be cut from the message at its first space
+// The field of a bad option used to be cut from the message at its first space
 // ("max_steps" for a flag spelled --max-steps).
 TEST(RunFailures, InvalidOptionNamesItsFlagAndRange) {
   SimulationRequest req;

@@ -13,7 +13,8 @@
 //
 // Why std::to_chars: it formats from the binary value with Ryu (no locale, no multi-precision
 // arithmetic), about 4x faster than glibc's printf at 12-17 digits; a sweep prints 12 numbers a
-// point and was bound by printf (issue 20). The append_* forms write into a caller's buffer and
+// point and was bound by printf (callgrind: glibc's __printf_fp_l and hack_digit were 14 % of
+// a 300 x 300 sweep's instructions). The append_* forms write into a caller's buffer and
 // allocate nothing once its capacity suffices.
 #pragma once
 

@@ -1,5 +1,5 @@
-// What an integrator's tolerance really delivers (issue 10: gsl-msbdf reached 4e-7 relative
-// error in e at rtol 1e-10 without a word). `ivv integrators -v` prints these statements.
+// What an integrator's tolerance really delivers (gsl-msbdf reached 4e-7 relative error in e
+// at rtol 1e-10 without a word). `ivv integrators -v` prints these statements.
 //
 // The contract common to all: rtol/atol bound the local error of each step in the normalised
 // state of impact_system.h (O(1) quantities); after N steps the COR is within the accumulated

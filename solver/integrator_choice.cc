@@ -26,7 +26,8 @@ std::string fmt3(double v) {
   return fmt(v, 3);
 }
 
-// Without a yield strength (zeta and z_y are NaN there, issue 21 item 6) the law runs in the
+// Without a yield strength (zeta and z_y are NaN there, and a ratio built on them chose dop853
+// for chung-ooi-2-aluminium, hertz, c = 1 N s/m, which ran out of steps) the law runs in the
 // Hertz scales: the loading time 1/omega = z_mH/v0 and the stiffness at the undamped Hertz
 // maximum compression z_mH, 1.5 K_h sqrt(z_mH), so S = 1.5 K_h z_mH^{3/2}/(c v0), the same
 // measure (relaxation rate K/c times the loading time) in the law's own scales.

@@ -14,6 +14,7 @@
 
 #include "solver/dp45_dense_probe.h"
 #include "solver/integrator_accuracy.h"
+#include "solver/model_choice.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -33,7 +34,8 @@ Exact linearized_undamped(const Scene& s) {
 
 // Default settings: adaptive rtol 1e-10 and rk4 h = 1e-3 give global errors ~1e-9 on this
 // smooth piecewise-harmonic problem; 1e-7 leaves a factor 100 for error accumulation over
-// the two phases and event location (the issue's requirement is 1e-6).
+// the two phases and event location (the requirement: every integrator within 1e-6 relative
+// at its default settings).
 constexpr double kDefaultSettingsTolerance = 1e-7;
 
 class EveryIntegrator : public ::testing::TestWithParam<IntegratorKind> {};
@@ -82,7 +84,8 @@ INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator, ::testing::ValuesIn(all_integrato
                            return n;
                          });
 
-// Issue 10: what each integrator's tolerance delivers is stated (integrator_accuracy.h);
+// What each integrator's tolerance delivers is stated (integrator_accuracy.h: gsl-msbdf once
+// reached 4e-7 at rtol 1e-10 unannounced);
 // the statement is re-measured here against the 50-digit reference.
 TEST_P(EveryIntegrator, DeliversTheStatedAccuracyOnThePaperScene) {
   for (bool damped : {true, false}) {
@@ -132,6 +135,34 @@ TEST(Dp45, DenseOutputIsFourthOrder) {
   }
   EXPECT_LE(distance[1], 0.6 * distance[0]) << distance[0] << " " << distance[1];
   EXPECT_LE(distance[2], 0.6 * distance[1]) << distance[1] << " " << distance[2];
+}
+
+double relative(double x, double ref) {
+  return std::abs(x - ref) / std::abs(ref);
+}
+
+// rk4 stated dt^4 = 1e-12 while F_max erred by 1.2e-10 to 3.9e-10 (v0 = 10 m/s, zeta = 0.05).
+// Its statement is now the onset term h^{5/2}; measured against mp50 here.
+TEST(Rk4, MeetsItsStatedError) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.velocity = 10.0;
+  req.scene.damping = Damping::ratio(0.05);
+  req.integrator = IntegratorKind::rk4;
+  req.model = ModelKind::automatic;
+  const ValidatedRequest v(req);
+  const ModelRun run = simulate_model(v);
+  ASSERT_TRUE(run.result.separated()) << run.result.reason;
+  ASSERT_EQ(run.result.integrator, "rk4");
+  SimulationRequest ref_req = req;
+  ref_req.model = ModelKind::full;
+  ref_req.integrator = IntegratorKind::mp50;
+  const ImpactResult ref = simulate(ref_req);
+  ASSERT_TRUE(ref.separated()) << ref.reason;
+  const double stated = run.choice.estimated_error;
+  EXPECT_LE(relative(run.result.F_max, ref.F_max), stated);
+  EXPECT_LE(relative(run.result.z_max, ref.z_max), stated);
+  EXPECT_LE(std::abs(run.result.e - ref.e), stated);  // e in units of v0
 }
 
 }  // namespace

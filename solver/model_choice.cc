@@ -120,8 +120,9 @@ double integrated_estimate(IntegratorKind k, const IntegratorOptions& opt) {
     const double h = opt.fixed_dt();
     // The step that starts at onset integrates F ~ z^{3/2} ~ tau^{3/2}, which is not smooth
     // there: its local error is O(h^{5/2}), not the smooth phases' C h^4 (h^4 = 1e-12 was
-    // stated at the default h = 1e-3 while F_max erred by 1.2e-10 to 3.9e-10, issue 21 item 7;
-    // the same term sets rk4's tolerance in verification/tolerances.h). Held by issue21_test.
+    // stated at the default h = 1e-3 while rk4's F_max erred by 1.2e-10 to 3.9e-10 at v0 = 10
+    // m/s, zeta = 0.05; the same term sets rk4's tolerance in verification/tolerances.h). Held by
+    // Rk4.MeetsItsStatedError (integrators_test.cc).
     return h * h * std::sqrt(h);
   }
   if (traits(k).reference) return opt.reference_tolerance;

@@ -1,9 +1,9 @@
-// `--model auto`: model only what a scene needs (issue 8, part 3). From the scene, the law and
-// the requested tolerance rtol, one of these routes runs (first that applies):
+// `--model auto`: model only what a scene needs. From the scene, the law and the requested
+// tolerance rtol, one of these routes runs (first that applies):
 //
-//  1. closed-form elastoplastic (energy): elastoplastic law, no dashpot. docs/design.md §2 "Undamped
-//     elastoplastic, closed form by energy" gives z_m, F_max, z_f, e and the hysteresis work
-//     exactly; the contact time in closed form on the loading legs (elastic leg: incomplete
+//  1. closed-form elastoplastic (energy): elastoplastic law, no dashpot. docs/design.md §2
+//     "Undamped elastoplastic, closed form by energy" gives z_m, F_max, z_f, e and the hysteresis
+//     work exactly; the contact time in closed form on the loading legs (elastic leg: incomplete
 //     beta function, t = (z_H/v0)(2/5) B(u_y; 2/5, 1/2) with u_y = (z_y/z_H)^{5/2}, z_H the
 //     Hertz z_m at v0; plastic leg: harmonic, 2 sqrt(m/K_y) asin(sqrt(K_y d/(2 F_m)))) and by
 //     Gauss-Legendre quadrature on the unloading leg after z = z_m - s^2 (which removes the

@@ -60,14 +60,10 @@ void apply_integration(const RequestOptions& o, SimulationRequest& req) {
   if (o.max_steps) req.options.max_steps = *o.max_steps;
 }
 
-}  // namespace
-
-SimulationRequest to_request(const RequestOptions& o) {
-  SimulationRequest req;
-  req.scene = load_scene(o.scene);
-  apply_scene_overrides(o, req.scene);
-  apply_law(o, req);
-  apply_integration(o, req);
+// Runs `check`; an InputError about a value an override replaced names the override's flag
+// (what the user typed) instead of the scene's key.
+template <class Check>
+void naming_overrides(const RequestOptions& o, Check check) {
   const std::array<Override, 6> overrides = {{{"impact.velocity", "--v0", o.v0.has_value()},
                                               {"damping.zeta", "--zeta", o.zeta.has_value()},
                                               {"damping.c", "--c", o.c.has_value()},
@@ -75,7 +71,7 @@ SimulationRequest to_request(const RequestOptions& o) {
                                               {"--param K", "--hc-k", o.hc_k.has_value()},
                                               {"--param mu", "--hc-mu", o.hc_mu.has_value()}}};
   try {
-    validate(req);
+    check();
   } catch (const InputError& e) {
     for (const Override& ov : overrides) {
       if (ov.given && e.field() == ov.field) {
@@ -85,7 +81,28 @@ SimulationRequest to_request(const RequestOptions& o) {
     }
     throw;
   }
+}
+
+}  // namespace
+
+SimulationRequest to_request(const RequestOptions& o) {
+  return to_request(load_scene(o.scene), o);
+}
+
+SimulationRequest to_request(Scene scene, const RequestOptions& o) {
+  SimulationRequest req;
+  req.scene = std::move(scene);
+  apply_scene_overrides(o, req.scene);
+  apply_law(o, req);
+  apply_integration(o, req);
+  naming_overrides(o, [&] { validate(req); });
   return req;
+}
+
+Scene to_scene(Scene scene, const RequestOptions& o) {
+  apply_scene_overrides(o, scene);
+  naming_overrides(o, [&] { validate(scene); });
+  return scene;
 }
 
 std::optional<RequestOptions::Invalid> RequestOptions::invalid() const {

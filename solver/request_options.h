@@ -53,6 +53,13 @@ struct RequestOptions {
 // (each point of a sweep) chooses its own; run_simulation() resolves it once for one impact.
 // Throws InputError naming the field.
 SimulationRequest to_request(const RequestOptions& options);
+// The same for a scene the front end already holds (the Python module's ivv.scene):
+// options.scene is not read; the overrides of `options` apply to `scene`.
+SimulationRequest to_request(Scene scene, const RequestOptions& options);
+// `scene` with the overrides of `options` (--v0, --zeta, --c, --lambda, --no-dashpot) applied
+// and validated on its own, without a law; InputError naming the flag of an override at fault,
+// as to_request() names it.
+Scene to_scene(Scene scene, const RequestOptions& options);
 
 // One impact as a front end shows it.
 struct SimulationRun {

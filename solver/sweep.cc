@@ -186,7 +186,7 @@ void validate(const SweepRequest& req) {
   // Every point is a valid request: each v0 and each zeta once (they enter separately); a
   // rate-dependent law with a dashpot is refused there, naming --zeta.
   // The grid's values were typed as --v0 and --zeta, not as the scene's impact.velocity and
-  // damping.zeta: a point's error names the flag (issue 21 item 14: --v0 1e308).
+  // damping.zeta: a point's error names the flag (`--v0 1e308` named impact.velocity).
   auto as_flag = [](const InputError& e, const char* flag) {
     const std::string what = e.what();
     return InputError(flag, what.substr(std::min(what.size(), e.field().size() + 2)));
@@ -280,6 +280,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   ParallelOptions opt;
   opt.threads = req.threads;
   opt.progress = req.progress;
+  opt.stop = req.stop;
   try {
     parallel_for(points.size(), opt, [&](std::size_t i) {
       points[i].v0 = req.velocities[i / nz];
@@ -348,8 +349,9 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
                                        "ivv: delete it or rerun that sweep");
     valid = line.size() + 1;
   }
-  // The partial CSV is rebuilt from the journal, whose rows carry checksums (issue 21 item 8:
-  // a partial row, like an unchecked journal row, could have been edited or cut short).
+  // The partial CSV is rebuilt from the journal, whose rows carry checksums (an edited or
+  // truncated row went into the final CSV with exit 0 when only "v0,zeta," was checked; a partial
+  // row, like an unchecked journal row, could have been edited or cut short).
   partial_ = std::fopen(partial.c_str(), "wb");
   if (!partial_)
     throw InputError("--out", "cannot write " + partial.string() + ": " + std::strerror(errno));
@@ -532,7 +534,8 @@ bool SweepSink::commit_csv(const std::function<void(StagedFile& csv)>& between) 
   partial_ = nullptr;
   if (closed != 0) io_error(partial, std::strerror(errno));
   // the CSV is copied to its temporary first, so that between `before_commit` (the sidecar)
-  // and the CSV's rename there is one rename, not the copy of the whole file (issue 21 item 9)
+  // and the CSV's rename there is one rename, not the copy of the whole file (a SIGKILL during
+  // that copy left a sidecar describing 300,000 points beside an older 2-row CSV)
   StagedFile csv(options_.csv, [&](std::ostream& out) {
     std::ifstream in(partial, std::ios::binary);
     out << in.rdbuf();

@@ -42,6 +42,10 @@ struct SweepRequest {
   int threads = 0;  // 0: all hardware threads
   // run_sweep only: called from worker threads (serialised) after each point: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
+  // run_sweep only: once true, no new point is started and run_sweep returns after the points
+  // in flight; the points never started keep a default ImpactResult (the caller asked to stop
+  // and knows it: the Python module's Ctrl-C).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The largest grid accepted: 1e8 points (a CSV of ~25 GB). Checked before anything is
@@ -144,10 +148,10 @@ class SweepSink {
   // --resume and returns false.
   bool finish(const std::function<void(const SweepCounts&)>& before_commit);
   // finish(), committing the CSV and the sidecar (options.sidecar, filled by `write_sidecar`)
-  // as a pair (issue 21 item 9): both are written to temporaries first, then the old sidecar is
-  // removed, the CSV renamed into place and the sidecar last, so a reader (or a SIGKILL at any
-  // moment) never pairs a sidecar with a CSV it does not describe: at worst a CSV has no
-  // sidecar yet.
+  // as a pair (a SIGKILL between them once left a sidecar beside a CSV it did not describe): both
+  // are written to temporaries first, then the old sidecar is removed, the CSV renamed into place
+  // and the sidecar last, so a reader (or a SIGKILL at any moment) never pairs a sidecar with a CSV
+  // it does not describe: at worst a CSV has no sidecar yet.
   bool finish_with_sidecar(
       const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar);
   const SweepCounts& counts() const { return counts_; }

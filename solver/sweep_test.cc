@@ -92,7 +92,7 @@ TEST(SweepValidate, NonFiniteOrNegativeValuesNameTheirFlag) {
   EXPECT_EQ(field_of(req), "--zeta");
 }
 
-// Issue 21 item 14: `sweep --v0 1e308` named impact.velocity, a field the user never typed.
+// `sweep --v0 1e308` named impact.velocity, a field the user never typed.
 TEST(SweepValidate, OutOfRangeGridValueNamesTheFlagNotTheSceneField) {
   SweepRequest req = paper_grid(2, 2);
   req.velocities[1] = 1e308;
@@ -193,7 +193,7 @@ TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
   EXPECT_EQ(slurp(csv), expected);
 }
 
-// Issue 21 item 8: only the "v0,zeta," prefix of a journal row was checked, so a row whose e
+// Only the "v0,zeta," prefix of a journal row was checked, so a row whose e
 // or status was edited went into the final CSV, and a row cut short became a short CSV row;
 // the partial CSV was trusted the same way. Each journal row now carries a checksum: a row that
 // fails it is computed again, and the partial CSV is rebuilt from the journal.
@@ -247,7 +247,7 @@ TEST(SweepSink, DamagedJournalRowIsRecomputedNotTrusted) {
   EXPECT_EQ(slurp(csv), expected);
 }
 
-// Issue 21 item 9: the sidecar was written before the CSV was renamed into place, and a run
+// The sidecar was written before the CSV was renamed into place, and a run
 // killed while copying left its temporary for ever. The pair is committed sidecar last, and a
 // dead process's temporary is removed by the next run on the same output.
 TEST(SweepSink, CsvAndSidecarCommittedAsAPairAndDeadTemporariesRemoved) {

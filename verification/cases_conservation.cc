@@ -71,7 +71,8 @@ Outcome conservation(IntegratorKind k, Check check, double tolerance) {
 // Captured impacts (no rebound) end at rest relative to the target (capture_end_state.h):
 // impulse m* v0, both bodies at the common velocity, dashpot displacement m* v0/c, the spring
 // at its permanent set z_f, final kinetic and stored energy 0 with the ledger still closed.
-// Scenes: the (paper, v0 = 10 m/s, zeta = 2), a slower one, and a free target sphere.
+// Scenes: the one that reported snapshot values (paper, v0 = 10 m/s, zeta = 2), a slower one,
+// and a free target sphere.
 std::vector<std::pair<std::string, Scene>> captured_scenes() {
   Scene free_target = with(paper_scene(), 10.0, 2.0);
   free_target.target_radius = 0.010;

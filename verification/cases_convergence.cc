@@ -120,9 +120,9 @@ Outcome step_ends_case(IntegratorKind k) {
 // --integrator auto (solver/integrator_choice.h) on a grid: the chosen integrator's errors in
 // e, F_max, z_max and t_f must stay within the estimated error it states; the choice must be
 // explicit on the lightly damped scenes (accuracy sets the steps there) and implicit at
-// zeta = 100 (stability would hold dop853 to thousands of steps). The heavily damped scenes of
-// issue 20 (v0 = 1 and 5 m/s, zeta = 8 and 16) take whichever the cost model picks, which must
-// keep its estimate too.
+// zeta = 100 (stability would hold dop853 to thousands of steps). The heavily damped scenes
+// (v0 = 1 and 5 m/s, zeta = 8 and 16, where a stiffness ratio once chose the slower rodas4) take
+// whichever the cost model picks, which must keep its estimate too.
 Outcome auto_choice_case(double rtol) {
   // the explicit choices against 200 rtol (kAutoErrorFactorExplicit); the stiff scene's implicit
   // choice is checked against its own estimate (300 rtol) as a separate failure below
@@ -170,7 +170,7 @@ Outcome auto_choice_case(double rtol) {
                " above the stated estimate " + fmt(c.estimated_error, 3));
     }
   }
-  // issue 20's heavily damped scenes: either candidate may be chosen; the reference is dop853
+  // the heavily damped scenes: either candidate may be chosen; the reference is dop853
   // at 1e-13 as above (its stability-limited steps are a few hundred here)
   for (double v0 : {1.0, 5.0})
     for (double zeta : {8.0, 16.0}) {

@@ -1,4 +1,4 @@
-// The dashpot from the struck structure (issue 18): the structural formulas against an
+// The dashpot from the struck structure (docs/design.md §1): the structural formulas against an
 // independent statement, Zener's sphere-on-plate problem (published values, small-lambda slope,
 // similarity, every integrator against the 50-digit reference over lambda 1e-3 ... 10) and the
 // paper's impactor on a T300/934 plate. Study: verification/study_structure.h.

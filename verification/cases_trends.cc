@@ -1,5 +1,5 @@
-// Published-trend tier: the paper's claims (docs/design.md §3) and the published restitution laws, each
-// turned into a measurable statement with a stated threshold. The cases read the studies that
+// Published-trend tier: the paper's claims (docs/design.md §3) and the published restitution laws,
+// each turned into a measurable statement with a stated threshold. The cases read the studies that
 // the report draws (study_restitution.h, study_paper.h), so what the report shows is what is
 // judged here; only eqs 20-21 run their own impacts (the report does not draw them).
 #include <algorithm>
@@ -525,12 +525,12 @@ Outcome damping_map(const std::string& name) {
 void register_published_trend_cases(Registry& reg) {
   const Tier T = Tier::published_trend;
   reg.add({"trend.cor-slope-minus-quarter", "Local slope d ln e/d ln v0 tends to -1/4 (eq. 21)", T,
-           "the issue's threshold 0.005 on |slope + 1/4| for v0 >= 100 v_y; central differences "
+           "a stated threshold 0.005 on |slope + 1/4| for v0 >= 100 v_y; central differences "
            "over v0 (1 +- 1e-3) have O(h^2) error ~1e-7 and e is accurate to 1e-11",
            false, slope_limit});
   reg.add({"trend.cor-slope-near-yield", "The slope is about -0.257 near 15 v_y, not -1/4 yet", T,
-           "docs/design.md §3 quotes three digits (-0.257): rounding allows 5e-4, the 0.1% central difference "
-           "adds < 1e-7; 1e-3",
+           "docs/design.md §3 quotes three digits (-0.257): rounding allows 5e-4, the 0.1% central "
+           "difference adds < 1e-7; 1e-3",
            false, slope_near_yield});
   reg.add({"trend.cor-undamped-simulated-is-closed-form",
            "Undamped elastoplastic COR: simulation equals the closed form by energy, 0.5-1e4 v_y",

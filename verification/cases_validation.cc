@@ -1,4 +1,4 @@
-// Validation cases (issue 19): the calibration recovers what generated its data, its 95 %
+// Validation cases: the calibration recovers what generated its data, its 95 %
 // intervals cover at the stated rate, it names what the data cannot determine, and it rejects
 // and out-ranks a wrong model. All data here are SYNTHETIC (validation/synthetic.h), generated
 // from stated parameters with stated, seeded noise.
@@ -111,8 +111,8 @@ Outcome coverage(int sets) {
 
 namespace {
 
-// Data all below yield (0.01-0.1 m/s; the paper's 0.1 m/s is elastic, docs/design.md §3) determine the
-// dashpot but not S_y: the case passes when S_y is named unidentifiable and c is not.
+// Data all below yield (0.01-0.1 m/s; the paper's 0.1 m/s is elastic, docs/design.md §3) determine
+// the dashpot but not S_y: the case passes when S_y is named unidentifiable and c is not.
 Outcome elastic_data() {
   const SimulationRequest truth = damped_paper();
   const MeasuredData data = synthetic_data(

@@ -83,7 +83,8 @@ Grid default_grid(const Scene& scene) {
 
 namespace {
 // A claimed COR is a number in [0, 1] at every velocity of the grid; anything else (0/0,
-// sqrt(-1), 1.5) is bad input, not a claim a check could pass (issue 21 item 3).
+// sqrt(-1), 1.5) is bad input, not a claim a check could pass (0/0 once passed "at no
+// separated run").
 void require_cor_claim_in_range(const Claims& claims, const std::vector<double>& velocities) {
   if (!claims.expected_cor) return;
   for (double v0 : velocities) {

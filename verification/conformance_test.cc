@@ -46,7 +46,7 @@ TEST(Conformance, TheHertzLawPassesEveryCheck) {
   EXPECT_NEAR(check(r, "dynamic.expected_cor").measured, 0.0, 1e-7);
 }
 
-// Issue 21 item 3: a claimed COR of 0/0 passed "at no separated run"; sqrt(-1) the same.
+// A claimed COR of 0/0 passed "at no separated run"; sqrt(-1) the same.
 TEST(Conformance, ClaimThatIsNotAFiniteCorIsBadInput) {
   for (double bad : {std::nan(""), 1.5, -0.1}) {
     Claims claims;
@@ -61,7 +61,7 @@ TEST(Conformance, ClaimThatIsNotAFiniteCorIsBadInput) {
   }
 }
 
-// Issue 21 item 14: a scene without a yield strength has no damping ratio; its default grid
+// A scene without a yield strength has no damping ratio; its default grid
 // is undamped instead of failing on damping.zeta.
 TEST(Conformance, DefaultGridOfASceneWithoutYieldIsUndamped) {
   Scene s = paper_scene();

@@ -1,4 +1,4 @@
-// The contact-law worked examples (examples/, docs/design.md §3, issue "the law author's workflow"), run
+// The contact-law worked examples (examples/, docs/design.md §3: the law author's workflow), run
 // through the conformance checks. The verification cases (cases_examples.cc) and the report's
 // worked-examples section read the same memoised results, so the two cannot disagree.
 //

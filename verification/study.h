@@ -1,6 +1,6 @@
 // A study: plain data computed once per process and shared by the verification cases that
-// judge it and the report sections that draw it (issue 10: every number the report prints is a
-// case's measurement or is labelled an illustration). A study is a function returning a const
+// judge it and the report sections that draw it (every number the report prints is a case's
+// measurement or is labelled an illustration). A study is a function returning a const
 // reference to a lazily computed, cached struct:
 //
 //   const SlopeStudy& slope_study() {

@@ -1,5 +1,5 @@
-// The dashpot from the struck structure (issue 18), as a study (verification/study.h): computed
-// once per process, judged by the structure.* cases (cases_structure.cc) and drawn by the
+// The dashpot from the struck structure (docs/design.md §1), as a study (verification/study.h):
+// computed once per process, judged by the structure.* cases (cases_structure.cc) and drawn by the
 // report's section "Damping from the structure".
 //
 // Zener's problem (scene/structure.h, oracles/zener.h): the Hertz law in series with a

@@ -44,7 +44,7 @@ int top_level_comma(const std::string& text) {
 }
 
 // The names muParser itself defines (constants _pi, _e and the built-in functions): a --param
-// of that name would silently redefine them (issue 21 item 5: --param _pi=1).
+// of that name would silently redefine them (--param _pi=1 did).
 const std::set<std::string>& builtin_names() {
   static const std::set<std::string> names = [] {
     mu::Parser parser;

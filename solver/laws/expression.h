@@ -1,4 +1,5 @@
-// Expression contact law: a force law typed on the command line, parsed by muParser (docs/design.md §5).
+// Expression contact law: a force law typed on the command line, parsed by muParser
+// (docs/design.md §5).
 //
 //   loading     F = force (z, zdot, zmax = z)            until dz/dt = 0
 //   unloading   F = unload(z, zdot, zmax = z_m)          after it; default: the loading
@@ -20,8 +21,8 @@
 // z = 0 at the latest, where the surfaces part and the force drops to 0 (the continuation
 // starts at 0, not at F(0)). Continuing from F(0) > 0 instead let the force push on below
 // z = 0 and a conservative law gained energy (e = 1.0006 for K_h*z^1.5 + 100 on the paper
-// scene at 1 m/s, issue 21 item 4). The jump at onset is the conformance check static.onset's
-// finding (verification/conformance.h); the run itself is well defined.
+// scene at 1 m/s, with negative plastic work, at any rtol). The jump at onset is the conformance
+// check static.onset's finding (verification/conformance.h); the run itself is well defined.
 //
 // The law runs in double only (no 50-digit reference). dF/dz and dF/dzdot are central
 // differences with step eps^{1/3} of the scale (relative error ~1e-10 where F is smooth); they

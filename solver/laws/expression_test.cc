@@ -6,7 +6,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "scene/input_error.h"
+#include "solver/consistency.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hertz.h"
 #include "solver/simulate.h"
@@ -56,6 +59,37 @@ TEST(ExpressionLaw, ParameterMayNotShadowAVariableOrConstant) {
   EXPECT_NO_THROW(compile("k*z", "", {{"k", 1e6}}));
 }
 
+// `--param _pi=1` silently redefined pi.
+TEST(ExpressionLaw, ParameterMayNotRedefineABuiltIn) {
+  EXPECT_THROW(compile("K_h*z^1.5", "", {{"_pi", 1.0}}), InputError);
+  EXPECT_THROW(compile("K_h*z^1.5", "", {{"_e", 1.0}}), InputError);
+  EXPECT_THROW(compile("K_h*z^1.5", "", {{"sqrt", 1.0}}), InputError);
+}
+
+// "K_h*z^1,5" (a decimal comma) was muParser's comma operator, a constant 5 N force.
+TEST(ExpressionLaw, DecimalCommaIsBadInputWithTheCaret) {
+  try {
+    compile("K_h*z^1,5");
+    FAIL() << "accepted a decimal comma";
+  } catch (const ExpressionError& e) {
+    EXPECT_EQ(e.field(), "--force");
+    EXPECT_EQ(e.position(), 7);
+    EXPECT_NE(std::string(e.what()).find("write decimals with '.'"), std::string::npos);
+  }
+  EXPECT_NO_THROW(compile("max(K_h*z^1.5, 0)"));  // a comma between arguments is fine
+}
+
+// 1e400 was reported as an "unknown variable".
+TEST(ExpressionLaw, OutOfRangeNumberIsNamedAsSuch) {
+  try {
+    compile("1e400*z");
+    FAIL() << "accepted 1e400";
+  } catch (const ExpressionError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the range of double"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ExpressionLaw, HertzExpressionEqualsTheHertzLaw) {
   const auto expr = compile("K_h*z^1.5");
   EXPECT_FALSE(expr->uses_rate());
@@ -81,6 +115,24 @@ TEST(ExpressionLaw, ContinuedLinearlyBelowZeroSoSeparationIsASignChange) {
   EXPECT_LT(below, 0.0);
   EXPECT_NEAR(below, -1e-9 * expr->stiffness_scale(), kAlgebra * 1e-9 * expr->stiffness_scale());
   EXPECT_FALSE(expr->non_finite().has_value());
+}
+
+// `--force 'K_h*z^1.5 + 100'` is conservative (e = 1 exactly: contact ends at z = 0, where the
+// force drops to 0), but the continuation below z = 0 started at F(0) = 100 N and pushed on:
+// e = 1.0006352 and negative plastic work, at any rtol.
+TEST(ExpressionLaw, ForceNotVanishingAtZeroEndsContactThereWithoutGainingEnergy) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.law = LawKind::expression;
+  req.expression.force = "K_h*z^1.5 + 100";
+  req.integrator = IntegratorKind::dop853;
+  const ImpactResult r = simulate(req);
+  ASSERT_TRUE(r.separated()) << r.reason;
+  // the run's own error bound (consistency.h, the bound its ledger passed); the bug was 6e-4
+  const double bound = accumulated_error_bound(r.steps, req.options);
+  EXPECT_NEAR(r.e, 1.0, bound);
+  EXPECT_LE(r.e, 1.0 + bound);
+  EXPECT_NEAR(r.events.back().z, 0.0, 1e-9 * r.z_max);  // separation at z = 0
 }
 
 TEST(ExpressionLaw, RateDependenceIsDetectedFromTheVariablesUsed) {
@@ -143,7 +195,8 @@ TEST(ExpressionLaw, NonFiniteForceInContactIsAFailureNamingTheExpression) {
   r.expression.force = "K_h*z^1.5 + log(2e-5 - z)";  // NaN once z > 2e-5 m
   const ImpactResult res = simulate(r);
   EXPECT_EQ(res.status, ImpactStatus::failed);
-  // reached inside contact: a computation that failed (exit 1), not bad input (issue 21.14)
+  // reached inside contact: a computation that failed (exit 1), not bad input (it was
+  // reported as `--law: ...` with exit 2)
   EXPECT_EQ(res.failure, FailureKind::law_non_finite);
   EXPECT_NE(res.reason.find("--force evaluated to"), std::string::npos) << res.reason;
 }
@@ -179,8 +232,8 @@ TEST(ExpressionLaw, RateDependentExpressionRefusesASeriesDashpot) {
   EXPECT_THROW(validate(r), InputError);
 }
 
-// Linear spring-dashpot m z'' + c z' + k z = 0 with tension allowed until z = 0 (docs/design.md §3):
-// e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m)).
+// Linear spring-dashpot m z'' + c z' + k z = 0 with tension allowed until z = 0 (docs/design.md
+// §3): e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m)).
 TEST(ExpressionLaw, LinearSpringDashpotWithTensionGivesTheClosedFormCor) {
   const double m = paper_scene().mass, k = 4e6;
   for (double zeta : {0.05, 0.2, 0.5}) {

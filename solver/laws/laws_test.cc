@@ -99,7 +99,7 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
 
 // Far above yield the unloading force and the stored energy are small differences of large
 // numbers (K_h z^{3/2} - K_h z_f^{3/2}); written that way they lost sqrt(z_m/z_y) of their
-// relative accuracy (issue 10: ~1e23 J wrong at v0 = 1e16 m/s). Reference: the textbook
+// relative accuracy (~1e23 J wrong at v0 = 1e16 m/s). Reference: the textbook
 // (cancelling) formulas evaluated in 50 digits, which absorb the loss. Tolerance: the factored
 // forms have only same-sign terms, so a few ulps per operation: 1e-13 relative.
 TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
