@@ -530,4 +530,27 @@ TEST(Cli, MessagesNameWhatTheUserGave) {
   }
 }
 
+// A finite plate runs its modes: final e, e_first, the contacts, F_max and the mode count in the
+// JSON and the text; a dashpot flag on it is bad input (exit 2) naming the flag.
+TEST(Cli, FinitePlateSimulateReportsContactsAndModes) {
+  const CliRun r = ivv("simulate --scene drop-weight-coupon --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model"], "finite-plate");
+  const auto& res = j["result"];
+  for (const char* key : {"e", "e_first", "F_max", "t_contact", "contacts", "contact_count",
+                          "mode_count", "residual_compliance", "energy"})
+    EXPECT_TRUE(res.contains(key)) << key;
+  EXPECT_GT(res["e"].get<double>(), 0.5);  // a rebound, not the infinite plate's capture
+  EXPECT_GT(res["F_max"].get<double>(), 1000.0);
+  EXPECT_GE(res["contact_count"].get<int>(), 1);
+  const CliRun text = ivv("simulate --scene steel-ball-on-finite-steel-plate --law hertz");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  for (const char* word : {"e_first", "contacts", "modes", "F_max"})
+    EXPECT_NE(text.out.find(word), std::string::npos) << word << "\n" << text.out;
+  const CliRun bad = ivv("simulate --scene drop-weight-coupon --zeta 0.1");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--zeta"), std::string::npos) << bad.err;
+}
+
 }  // namespace

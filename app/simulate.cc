@@ -8,6 +8,7 @@
 #include "reports/impact_text.h"
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
+#include "solver/plate/plate_impact.h"
 
 namespace ivv::app {
 namespace {
@@ -36,7 +37,9 @@ class Simulate final : public Command {
   }
 
   int run(const Invocation&) override {
-    SimulationRequest req = to_request(to_options(flags_));
+    const RequestOptions options = to_options(flags_);
+    if (has_finite_plate(load_scene(options.scene))) return run_plate(options);
+    SimulationRequest req = to_request(options);
     // given but empty is an error (resolve_output_path says so), not "no trajectory"
     if (trajectory_) resolve_output_path(*trajectory_, "--trajectory");
     std::vector<TrajectoryPoint> samples;
@@ -56,6 +59,24 @@ class Simulate final : public Command {
   }
 
  private:
+  // A finite plate: its modes, no dashpot (solver/plate/plate_impact.h).
+  int run_plate(const RequestOptions& options) const {
+    if (trajectory_)
+      throw InputError("--trajectory",
+                       "not written for a finite plate yet (its state is the "
+                       "impactor and every kept mode)");
+    const PlateRun run = run_plate_simulation(options);
+    if (json_)
+      std::cout << plate_simulation_json(run).dump(2) << std::endl;
+    else
+      std::cout << plate_impact_summary(run);
+    if (!run.result.ok) {
+      if (json_) std::cerr << "ivv simulate: " << run.result.reason << "\n";
+      return kExitFailure;
+    }
+    return 0;
+  }
+
   ModelFlags flags_;
   bool json_ = false;
   std::optional<std::string> trajectory_;

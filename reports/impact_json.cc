@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "solver/infinite_plate_check.h"
+#include "solver/plate/plate_modes.h"
 
 namespace ivv {
 
@@ -122,6 +123,90 @@ nlohmann::json simulation_json(const SimulationRun& run) {
   nlohmann::json j = simulation_json(run.request, run.result);
   if (run.choice) j["model_choice"] = model_choice_json(*run.choice, run.request.model);
   return j;
+}
+
+namespace {
+
+nlohmann::json plate_result_json(const PlateImpactResult& r) {
+  auto value = [&r](double v) { return r.ok ? finite_or_null(v) : nlohmann::json(nullptr); };
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const PlateContact& c : r.contacts)
+    contacts.push_back({{"t_start", c.t_start},
+                        {"t_end", c.t_end},
+                        {"impulse", c.impulse},
+                        {"peak_force", c.peak_force},
+                        {"velocity_end", c.velocity_end}});
+  return {
+      {"ok", r.ok},
+      {"reason", r.reason},
+      {"e", value(r.e)},
+      {"e_first", value(r.e_first)},
+      {"F_max", value(r.F_max)},
+      {"t_contact", value(r.t_contact)},
+      {"t_contact_is", "the first contact's duration"},
+      {"z_max", value(r.z_max)},
+      {"impulse", value(r.impulse)},
+      {"contact_count", r.contacts.size()},
+      {"contacts", contacts},
+      {"mode_count", r.mode_count},
+      {"omega_cut", finite_or_null(r.omega_cut)},
+      {"static_compliance", finite_or_null(r.static_compliance)},
+      {"residual_compliance", finite_or_null(r.residual_compliance)},
+      {"excursion_bound", value(r.excursion_bound)},
+      {"t_end", value(r.t_end)},
+      {"compression_maxima", r.compression_maxima},
+      {"reloads", r.reloads},
+      {"energy",
+       {{"initial", r.energy.initial},
+        {"kinetic", value(r.energy.kinetic)},
+        {"plate", value(r.energy.plate)},
+        {"plastic", value(r.energy.plastic)},
+        {"ledger_max_error", r.energy.max_error},
+        {"ledger_checks", r.energy.checks}}},
+      {"steps", r.steps},
+      {"free_flight_steps", r.free_flight_steps},
+      {"rhs_evaluations", r.rhs_evaluations},
+  };
+}
+
+}  // namespace
+
+nlohmann::json plate_simulation_json(const PlateRun& run) {
+  const Scene& s = run.scene;
+  const FinitePlate plate =
+      finite_plate(s.damping.structure, s.target_youngs_modulus, s.target_poisson_ratio);
+  return {
+      {"scene", scene_json(s, derive(s))},
+      {"model", "finite-plate"},
+      {"law", std::string(to_string(run.law))},
+      {"plate",
+       {{"length_x", plate.length_x},
+        {"length_y", plate.length_y},
+        {"impact_x", plate.impact_x},
+        {"impact_y", plate.impact_y},
+        {"D11", plate.bending.D11},
+        {"D22", plate.bending.D22},
+        {"D12", plate.bending.D12},
+        {"D66", plate.bending.D66},
+        {"mass", plate.mass()},
+        {"mass_ratio", s.mass / plate.mass()},
+        // 2 d_edge/c_g at omega = pi/t_contact (solver/plate/plate_modes.h), against t_contact
+        {"wave_return_time", run.result.ok
+                                 ? nlohmann::json(flexural_return_time(plate, run.result.t_contact))
+                                 : nlohmann::json(nullptr)}}},
+      {"options",
+       {{"rtol", run.options.rtol}, {"atol", run.options.atol}, {"cutoff", run.options.cutoff}}},
+      {"truncation",
+       {{"mode_count", run.result.mode_count},
+        {"omega_cut", finite_or_null(run.result.omega_cut)},
+        {"e_at_half_cutoff", finite_or_null(run.e_half_cutoff)},
+        {"estimated_error_e", finite_or_null(run.truncation_error)},
+        {"rule",
+         "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as the "
+         "static compliance C_res in series; error of e estimated as |e - e(cutoff/2)|/7 "
+         "(observed order 3 in the cut-off)"}}},
+      {"result", plate_result_json(run.result)},
+  };
 }
 
 }  // namespace ivv

@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "scene/scene_json.h"  // scene_json(), structure_json(): the one scene writer
 #include "solver/model_choice.h"
+#include "solver/plate/plate_impact.h"
 #include "solver/request_options.h"
 #include "solver/result.h"
 #include "solver/simulate.h"
@@ -24,5 +25,11 @@ nlohmann::json simulation_json(const SimulationRequest& req, const ImpactResult&
 nlohmann::json model_choice_json(const ModelChoice& choice, ModelKind model);
 // simulation_json() of the run, with "model_choice" where a choice was made.
 nlohmann::json simulation_json(const SimulationRun& run);
+
+// A finite-plate impact (solver/plate/plate_impact.h): {"scene", "model": "finite-plate",
+// "law", "plate", "result"}; result carries e (final, once no contact is possible), e_first (at
+// the first separation), contacts (each start, end, impulse, peak force), F_max over all,
+// t_contact (the first contact's duration), the mode count and compliances, the energy ledger.
+nlohmann::json plate_simulation_json(const PlateRun& run);
 
 }  // namespace ivv

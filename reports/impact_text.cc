@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "solver/infinite_plate_check.h"
+#include "solver/plate/plate_modes.h"
 
 namespace ivv {
 
@@ -151,8 +152,59 @@ std::string scene_summary(const Scene& s) {
         << "  omega0 = " << p.omega0 << " rad/s\n"
         << "  v_y    = " << p.v_yield << " m/s\n";
   }
-  out << dashpot_text(s, p);
+  out << dashpot_text(s, p) << finite_plate_text(s);
   return out.str();
+}
+
+std::string plate_impact_summary(const PlateRun& run) {
+  const PlateImpactResult& r = run.result;
+  std::ostringstream out;
+  out.precision(8);
+  out << "finite plate  " << run.scene.name << ", law " << to_string(run.law)
+      << ", v0 = " << run.scene.velocity << " m/s, " << r.mode_count << " modes below "
+      << r.omega_cut << " rad/s, C_res = " << r.residual_compliance
+      << " of C_static = " << r.static_compliance << " m/N\n";
+  if (!r.ok) {
+    out << "  status       failed: " << r.reason << "\n";
+    return out.str();
+  }
+  out << "  COR          e = " << r.e
+      << " (once no further contact is possible), e_first = " << r.e_first
+      << " (at the first separation)\n"
+      << "  truncation   e at half the cut-off " << run.e_half_cutoff
+      << ": the modes left out cost about " << run.truncation_error << " in e\n"
+      << "  contacts     " << r.contacts.size() << ", F_max = " << r.F_max
+      << " N, t_contact = " << r.t_contact << " s (the first contact)\n";
+  for (std::size_t i = 0; i < r.contacts.size() && i < 20; ++i) {
+    const PlateContact& c = r.contacts[i];
+    out << "    " << i + 1 << ": t = " << c.t_start << " ... " << c.t_end << " s, impulse "
+        << c.impulse << " N s, peak " << c.peak_force << " N\n";
+  }
+  if (r.contacts.size() > 20) out << "    ... (" << r.contacts.size() - 20 << " more)\n";
+  out << "  energy       (1/2) m v0^2 = " << r.energy.initial << " J = kinetic " << r.energy.kinetic
+      << " + plate " << r.energy.plate << " + plastic " << r.energy.plastic << " J (ledger within "
+      << r.energy.max_error << " over " << r.energy.checks << " checks)\n"
+      << "  impulse      " << r.impulse << " N s = m (v0 - v_final); plate excursion bound "
+      << r.excursion_bound << " m at t = " << r.t_end << " s\n";
+  return out.str();
+}
+
+std::string finite_plate_text(const Scene& s) {
+  if (s.damping.kind != Damping::Kind::structure || !s.damping.structure.finite_plate()) return "";
+  const FinitePlate p =
+      finite_plate(s.damping.structure, s.target_youngs_modulus, s.target_poisson_ratio);
+  std::ostringstream os;
+  os.precision(6);
+  os << "finite plate " << p.length_x << " x " << p.length_y << " x " << p.thickness
+     << " m, simply supported, struck at (" << p.impact_x << ", " << p.impact_y << ") m\n"
+     << "  D11, D22, D12, D66 = " << p.bending.D11 << ", " << p.bending.D22 << ", " << p.bending.D12
+     << ", " << p.bending.D66 << " N m"
+     << (p.orthotropic_given ? " (given)" : " (isotropic from E, nu)") << "\n"
+     << "  plate mass = " << p.mass() << " kg, impactor/plate = " << s.mass / p.mass() << "\n"
+     << "  omega_11 = " << plate_mode_frequency(p, 1, 1)
+     << " rad/s, C_static = " << plate_static_compliance(p).value << " m/N under the impactor\n"
+     << "  (a finite plate has no dashpot: c above is the infinite plate's, for comparison)\n";
+  return os.str();
 }
 
 }  // namespace ivv

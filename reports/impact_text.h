@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "solver/plate/plate_impact.h"
 #include "solver/request_options.h"
 
 namespace ivv {
@@ -20,5 +21,13 @@ std::string scene_summary(const Scene& scene);
 // Lines for `scene show`: the structure's elements (c_i with formulas), then c, zeta (with a
 // yield strength) and Zener's lambda, each with the formula it came from.
 std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
+
+// A finite-plate impact: final e, e_first, the contacts (start, end, impulse, peak force),
+// F_max, the first contact's t_contact, the mode count and truncation, the energy ledger.
+std::string plate_impact_summary(const PlateRun& run);
+
+// Lines for `scene show` of a finite plate: size, impact point, D's, mass against the
+// impactor's, the first mode's frequency and the static compliance under the impactor.
+std::string finite_plate_text(const Scene& scene);
 
 }  // namespace ivv

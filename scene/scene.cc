@@ -382,6 +382,37 @@ void parse_damping(const toml::table& d, Scene& s) {
   if (lambda) s.damping = Damping::zener(*lambda);
 }
 
+// The finite plate's keys of [structure] (scene/structure.h): the lengths, edges, impact point
+// and the four bending stiffnesses (all four or none). Ranges are checked by validate_structure.
+void parse_finite_plate(const toml::table& t, Structure& st) {
+  st.length_x = number(t, "structure", "length_x");
+  st.length_y = number(t, "structure", "length_y");
+  st.impact_x = number(t, "structure", "impact_x");
+  st.impact_y = number(t, "structure", "impact_y");
+  if (const toml::node* e = t.get("edges")) {
+    const auto name = e->value<std::string>();
+    if (name && *name == "clamped")
+      throw InputError("structure.edges",
+                       "\"clamped\" is not modelled yet; accepted: \"simply-supported\"");
+    st.edges = name ? plate_edges_from_name(*name) : std::nullopt;
+    if (!st.edges) throw InputError("structure.edges", "accepted: \"simply-supported\"");
+  }
+  const std::array<const char*, 4> names = {"D11", "D22", "D12", "D66"};
+  std::array<std::optional<double>, 4> d;
+  int given = 0;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    d[i] = number(t, "structure", names[i]);
+    given += d[i].has_value();
+  }
+  if (given == 0) return;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (!d[i])
+      throw InputError(std::string("structure.") + names[i],
+                       "missing: D11, D22, D12 and D66 are given together (all four: a "
+                       "specially orthotropic plate; none: isotropic from E and nu)");
+  st.bending = OrthotropicBending{*d[0], *d[1], *d[2], *d[3]};
+}
+
 // [structure]: the keys a kind uses (the others are bad input, not ignored).
 Structure parse_structure(const toml::table& t) {
   const toml::node* kind_node = t.get("kind");
@@ -394,13 +425,20 @@ Structure parse_structure(const toml::table& t) {
   }
   std::set<std::string> keys = {"kind", "density", "youngs_modulus"};
   if (*kind != Structure::Kind::bar)
-    keys.insert({"thickness", "bending_stiffness", "poisson_ratio"});
+    keys.insert({"thickness", "bending_stiffness", "poisson_ratio", "length_x", "length_y", "edges",
+                 "impact_x", "impact_y", "D11", "D22", "D12", "D66"});
   if (*kind != Structure::Kind::plate) keys.insert("area");
+  for (const char* length : {"length_x", "length_y"})
+    if (*kind == Structure::Kind::bar && t.contains(length))
+      throw InputError(std::string("structure.") + length,
+                       "not used by kind = \"bar\": the lengths make a plate finite "
+                       "(kind = \"plate\")");
   for (const auto& [key, node] : t) {
     const std::string k(key.str());
     if (keys.count(k)) continue;
-    static const std::set<std::string> known = {"thickness", "bending_stiffness", "poisson_ratio",
-                                                "area"};
+    static const std::set<std::string> known = {
+        "thickness", "bending_stiffness", "poisson_ratio", "area", "length_x", "length_y", "edges",
+        "impact_x",  "impact_y",          "D11",           "D22",  "D12",      "D66"};
     if (!known.count(k)) reject_unknown_keys(t, "structure", keys);
     throw InputError("structure." + k, "not used by kind = \"" + *kind_name +
                                            "\"; accepted keys for it: " + join(keys));
@@ -413,6 +451,7 @@ Structure parse_structure(const toml::table& t) {
   st.bending_stiffness = number(t, "structure", "bending_stiffness");
   st.youngs_modulus = number(t, "structure", "youngs_modulus");
   st.poisson_ratio = number(t, "structure", "poisson_ratio");
+  parse_finite_plate(t, st);
   return st;
 }
 

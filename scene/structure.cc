@@ -26,6 +26,47 @@ std::optional<Structure::Kind> structure_kind_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<PlateEdges> plate_edges_from_name(std::string_view name) {
+  if (name == plate_edges_name(PlateEdges::simply_supported)) return PlateEdges::simply_supported;
+  return std::nullopt;
+}
+
+std::string_view plate_edges_name(PlateEdges edges) {
+  switch (edges) {
+    case PlateEdges::simply_supported:
+      return "simply-supported";
+  }
+  return "?";
+}
+
+double olsson_bending_stiffness(const OrthotropicBending& d) {
+  const double root = std::sqrt(d.D11 * d.D22);
+  const double A = (d.D12 + 2.0 * d.D66) / root;
+  return std::sqrt(d.D11 * d.D22 * (A + 1.0) / 2.0);
+}
+
+FinitePlate finite_plate(const Structure& s, double target_E, double target_nu) {
+  if (!s.has_plate() || !s.length_x || !s.length_y)
+    throw std::logic_error("finite_plate: the structure has no finite plate");
+  FinitePlate p;
+  p.length_x = *s.length_x;
+  p.length_y = *s.length_y;
+  p.thickness = s.thickness;
+  p.density = s.density;
+  p.impact_x = s.impact_x.value_or(p.length_x / 2.0);
+  p.impact_y = s.impact_y.value_or(p.length_y / 2.0);
+  p.orthotropic_given = s.bending.has_value();
+  if (s.bending) {
+    p.bending = *s.bending;
+  } else {
+    const double nu = s.poisson_ratio.value_or(target_nu);
+    const double D = s.bending_stiffness.value_or(
+        plate_bending_stiffness(s.youngs_modulus.value_or(target_E), nu, s.thickness));
+    p.bending = {D, D, nu * D, (1.0 - nu) * D / 2.0};
+  }
+  return p;
+}
+
 double plate_bending_stiffness(double E, double nu, double h) {
   return E * h * h * h / (12.0 * (1.0 - nu * nu));
 }
@@ -69,10 +110,67 @@ void reject_unused(const Structure& s) {
     refuse("youngs_modulus", "bending_stiffness is given: D* is used as it is");
 }
 
+// D11..D66 positive definite for a specially orthotropic plate: D11 > 0, D22 > 0, D66 > 0 and
+// D11 D22 > D12^2 (the bending strain energy is then positive for every curvature).
+void validate_orthotropic(const Structure& s) {
+  const OrthotropicBending& d = *s.bending;
+  require_positive_finite("structure.D11", d.D11, "N m");
+  require_positive_finite("structure.D22", d.D22, "N m");
+  require_positive_finite("structure.D66", d.D66, "N m");
+  require(std::isfinite(d.D12) && d.D12 * d.D12 < d.D11 * d.D22, "structure.D12",
+          "a finite number with D12^2 < D11 D22 (positive definite bending stiffness)", d.D12);
+  if (s.bending_stiffness)
+    throw InputError("structure.bending_stiffness",
+                     "not with D11, D22, D12, D66: the plate's stiffness is given twice (the "
+                     "infinite plate's D* is Olsson's sqrt(D11 D22 (A + 1)/2) of them)");
+  if (s.youngs_modulus || s.poisson_ratio)
+    throw InputError(s.youngs_modulus ? "structure.youngs_modulus" : "structure.poisson_ratio",
+                     "not with D11, D22, D12, D66: the plate's stiffness is given by them");
+}
+
+// An impact point strictly inside the plate: on an edge it excites no Navier mode.
+void validate_impact_point(std::string_view field, const std::optional<double>& x0, double a,
+                           std::string_view length_field) {
+  if (!x0) return;
+  std::string range = "a point strictly inside the plate, 0 < ";
+  range += std::string(field.substr(field.find('.') + 1)) + " < " +
+           std::string(length_field.substr(length_field.find('.') + 1)) + " = " +
+           std::to_string(a) + " m (on an edge it excites no mode)";
+  require(std::isfinite(*x0) && *x0 > 0.0 && *x0 < a, field, range, *x0);
+}
+
+void validate_finite_plate(const Structure& s) {
+  if (!s.finite_plate()) {
+    const char* needs = "needs a finite plate: give length_x and length_y (and edges)";
+    if (s.edges) throw InputError("structure.edges", needs);
+    if (s.impact_x) throw InputError("structure.impact_x", needs);
+    if (s.impact_y) throw InputError("structure.impact_y", needs);
+    return;
+  }
+  if (s.kind != Structure::Kind::plate)
+    throw InputError(s.length_x ? "structure.length_x" : "structure.length_y",
+                     "a finite plate needs kind = \"plate\" (a finite plate in series with a bar "
+                     "is not modelled; without lengths the plate is infinite)");
+  if (!s.length_x || !s.length_y)
+    throw InputError(s.length_x ? "structure.length_y" : "structure.length_x",
+                     "missing: length_x and length_y are given together (both make the plate "
+                     "finite; neither leaves it infinite)");
+  require_positive_finite("structure.length_x", *s.length_x, "m");
+  require_positive_finite("structure.length_y", *s.length_y, "m");
+  if (!s.edges)
+    throw InputError("structure.edges",
+                     "missing: a finite plate needs edges = \"simply-supported\" (the only kind "
+                     "modelled)");
+  validate_impact_point("structure.impact_x", s.impact_x, *s.length_x, "structure.length_x");
+  validate_impact_point("structure.impact_y", s.impact_y, *s.length_y, "structure.length_y");
+}
+
 }  // namespace
 
 void validate_structure(const Structure& s, double target_E, double target_nu) {
   reject_unused(s);
+  validate_finite_plate(s);
+  if (s.bending) validate_orthotropic(s);
   require_positive_finite("structure.density", s.density, "kg/m^3");
   if (s.youngs_modulus)
     require_positive_finite("structure.youngs_modulus", *s.youngs_modulus, "Pa");
@@ -84,7 +182,7 @@ void validate_structure(const Structure& s, double target_E, double target_nu) {
     require_positive_finite("structure.thickness", s.thickness, "m");
     if (s.bending_stiffness) {
       require_positive_finite("structure.bending_stiffness", *s.bending_stiffness, "N m");
-    } else {
+    } else if (!s.bending) {
       if (!std::isfinite(E))
         throw InputError("structure.bending_stiffness",
                          std::string(rigid) + "bending_stiffness [N m] or youngs_modulus [Pa]");
@@ -108,9 +206,10 @@ StructureDashpot structure_dashpot(const Structure& s, double target_E, double t
   StructureDashpot d;
   const double E = s.youngs_modulus.value_or(target_E);
   if (s.has_plate()) {
-    d.bending_stiffness_given = s.bending_stiffness.has_value();
-    d.bending_stiffness = s.bending_stiffness.value_or(
-        plate_bending_stiffness(E, s.poisson_ratio.value_or(target_nu), s.thickness));
+    d.bending_stiffness_given = s.bending_stiffness.has_value() || s.bending.has_value();
+    d.bending_stiffness = s.bending ? olsson_bending_stiffness(*s.bending)
+                                    : s.bending_stiffness.value_or(plate_bending_stiffness(
+                                          E, s.poisson_ratio.value_or(target_nu), s.thickness));
     d.c_plate = plate_dashpot(s.density, s.thickness, d.bending_stiffness);
   }
   if (s.has_bar()) d.c_bar = bar_dashpot(s.area, E, s.density);
@@ -119,7 +218,9 @@ StructureDashpot structure_dashpot(const Structure& s, double target_E, double t
 }
 
 std::string structure_formula(const Structure& s) {
-  const std::string D = s.bending_stiffness ? "D = D* (given)" : "D = E h^3/(12 (1 - nu^2))";
+  const std::string D = s.bending             ? "D = D* = sqrt(D11 D22 (A + 1)/2) (Olsson)"
+                        : s.bending_stiffness ? "D = D* (given)"
+                                              : "D = E h^3/(12 (1 - nu^2))";
   switch (s.kind) {
     case Structure::Kind::plate:
       return "c = c_plate = 8 sqrt(rho h D), " + D;

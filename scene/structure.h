@@ -31,6 +31,12 @@
 // a = alpha/z*, the equations m alpha'' = -F, c y' = F become a'' = -sigma^{3/2},
 // y' = lambda sigma^{3/2}: e depends on lambda alone (docs/design.md §1).
 //
+// A finite plate (docs/design.md §1 "A finite plate"): with length_x = a and length_y = b the plate
+// is a Kirchhoff plate a x b, simply supported on its four edges, struck at (impact_x, impact_y)
+// (default the centre), isotropic (D12 = nu D, D66 = (1 - nu) D/2) or specially orthotropic
+// with D11, D22, D12, D66 given. Its dynamics are solver/plate/; here only its description and
+// the checks of bad input. Given D11..D66 also define the infinite plate's D* (Olsson's).
+//
 // Units: SI throughout (m, kg, Pa, N m, N s/m).
 #pragma once
 
@@ -42,6 +48,14 @@
 
 namespace ivv {
 
+// The bending stiffnesses of a specially orthotropic plate (D16 = D26 = 0) [N m].
+struct OrthotropicBending {
+  double D11 = 0.0, D22 = 0.0, D12 = 0.0, D66 = 0.0;
+};
+
+// The edge conditions of a finite plate: only simply supported (Navier modes) is modelled.
+enum class PlateEdges { simply_supported };
+
 // The struck structure of a scene ([structure] in a scene file).
 struct Structure {
   enum class Kind { plate, bar, plate_and_bar };
@@ -52,8 +66,16 @@ struct Structure {
   std::optional<double> bending_stiffness;  // D* [N m] (plate); absent: E h^3/(12 (1 - nu^2))
   std::optional<double> youngs_modulus;     // E [Pa] of the structure; absent: the target's
   std::optional<double> poisson_ratio;      // nu [-] of the plate; absent: the target's
+  // A finite plate: both lengths or neither (infinite); edges required with them.
+  std::optional<double> length_x;             // a [m]
+  std::optional<double> length_y;             // b [m]
+  std::optional<PlateEdges> edges;            // required with the lengths
+  std::optional<double> impact_x;             // x0 [m], absent: a/2
+  std::optional<double> impact_y;             // y0 [m], absent: b/2
+  std::optional<OrthotropicBending> bending;  // D11..D66 [N m]; absent: isotropic
 
   bool has_plate() const { return kind != Kind::bar; }
+  bool finite_plate() const { return length_x.has_value() || length_y.has_value(); }
   bool has_bar() const { return kind != Kind::plate; }
 };
 
@@ -72,6 +94,28 @@ struct StructureDashpot {
   double c = inf;                        // series: 1/c = 1/c_plate + 1/c_bar [N s/m]
 };
 
+// "simply-supported" (the scene file's spelling); nullopt for any other name.
+std::optional<PlateEdges> plate_edges_from_name(std::string_view name);
+std::string_view plate_edges_name(PlateEdges edges);
+
+// The facts of a valid finite plate (validate_structure first): a x b x h, rho, the impact
+// point and the four bending stiffnesses (isotropic ones from E, nu when not given).
+struct FinitePlate {
+  double length_x = 0.0, length_y = 0.0;  // a, b [m]
+  double thickness = 0.0;                 // h [m]
+  double density = 0.0;                   // rho [kg/m^3]
+  double impact_x = 0.0, impact_y = 0.0;  // x0, y0 [m]
+  OrthotropicBending bending;             // [N m]
+  bool orthotropic_given = false;         // D11..D66 from the scene (else isotropic)
+  double mass() const { return density * thickness * length_x * length_y; }  // [kg]
+};
+// Throws std::logic_error when s has no finite plate.
+FinitePlate finite_plate(const Structure& s, double target_E, double target_nu);
+
+// Olsson's effective stiffness of a specially orthotropic plate, sqrt(D11 D22 (A + 1)/2),
+// A = (D12 + 2 D66)/sqrt(D11 D22) [N m] (D for an isotropic one).
+double olsson_bending_stiffness(const OrthotropicBending& d);
+
 // Formulas of the header, each alone.
 double plate_bending_stiffness(double youngs_modulus, double poisson_ratio, double thickness);
 double plate_dashpot(double density, double thickness, double bending_stiffness);
@@ -80,7 +124,10 @@ double series_dashpot(double c1, double c2);  // 1/(1/c1 + 1/c2); inf is no dash
 
 // Throws InputError naming the [structure] field at fault and its accepted range: density,
 // thickness, area, bending_stiffness, youngs_modulus, poisson_ratio (-1 < nu < 0.5), and a
-// material the formulas need but cannot have (a rigid target gives no E for the structure).
+// material the formulas need but cannot have (a rigid target gives no E for the structure);
+// for a finite plate: both lengths positive and finite, edges = "simply-supported", the impact
+// point strictly inside, D11..D66 all or none and positive definite (D11 > 0, D22 > 0,
+// D66 > 0, D11 D22 > D12^2), not with bending_stiffness; no lengths with a bar.
 // target_E, target_nu: the scene's target (E may be +inf: rigid).
 void validate_structure(const Structure& s, double target_E, double target_nu);
 

@@ -165,5 +165,136 @@ TEST(Structure, BadInputNamesTheField) {
   EXPECT_EQ(field_of(s, std::numeric_limits<double>::infinity()), "structure.youngs_modulus");
 }
 
+// A finite plate in a scene file: the 5 mm steel ball on a 200 x 150 x 2 mm steel plate.
+std::string plate_scene(const std::string& extra) {
+  return R"(
+[impactor]
+mass = 0.004168
+radius = 0.0025
+youngs_modulus = 207e9
+poisson_ratio = 0.3
+[target]
+youngs_modulus = 207e9
+poisson_ratio = 0.3
+[structure]
+kind = "plate"
+thickness = 0.002
+density = 7960
+)" + extra +
+         R"(
+[impact]
+velocity = 1.0
+)";
+}
+
+constexpr const char* kFiniteKeys =
+    "length_x = 0.2\nlength_y = 0.15\nedges = \"simply-supported\"\n";
+
+TEST(FinitePlate, LengthsMakeThePlateFiniteWithItsDefaults) {
+  const Scene s = parse_scene_toml(plate_scene(kFiniteKeys), "p.toml");
+  const Structure& st = s.damping.structure;
+  ASSERT_TRUE(st.finite_plate());
+  const FinitePlate p = finite_plate(st, 207e9, 0.3);
+  EXPECT_EQ(p.length_x, 0.2);
+  EXPECT_EQ(p.length_y, 0.15);
+  EXPECT_EQ(p.impact_x, 0.1);  // the centre by default
+  EXPECT_EQ(p.impact_y, 0.075);
+  const double D = plate_bending_stiffness(207e9, 0.3, 0.002);
+  EXPECT_NEAR(p.bending.D11 / D, 1.0, kRounding);
+  EXPECT_NEAR(p.bending.D22 / D, 1.0, kRounding);
+  EXPECT_NEAR(p.bending.D12 / (0.3 * D), 1.0, kRounding);
+  EXPECT_NEAR(p.bending.D66 / (0.35 * D), 1.0, kRounding);
+  EXPECT_FALSE(p.orthotropic_given);
+  EXPECT_NEAR(p.mass(), 7960 * 0.002 * 0.2 * 0.15, 1e-15);
+  // without lengths the plate is infinite exactly as before
+  const Scene inf = parse_scene_toml(plate_scene(""), "i.toml");
+  EXPECT_FALSE(inf.damping.structure.finite_plate());
+  EXPECT_THROW(finite_plate(inf.damping.structure, 207e9, 0.3), std::logic_error);
+}
+
+// Given D's are used as they are, and the infinite plate's D* is Olsson's of them: for an
+// isotropic set (D12 = nu D, D66 = (1 - nu) D/2) A = 1 and D* = D.
+TEST(FinitePlate, OrthotropicStiffnessesAndOlssonsDStar) {
+  const Scene s = parse_scene_toml(
+      plate_scene(std::string(kFiniteKeys) +
+                  "impact_x = 0.05\nimpact_y = 0.04\nD11 = 483.9\nD22 = 282.2\nD12 = 12.7\n"
+                  "D66 = 29.3\n"),
+      "o.toml");
+  const FinitePlate p = finite_plate(s.damping.structure, 207e9, 0.3);
+  EXPECT_EQ(p.impact_x, 0.05);
+  EXPECT_EQ(p.impact_y, 0.04);
+  EXPECT_EQ(p.bending.D11, 483.9);
+  EXPECT_EQ(p.bending.D66, 29.3);
+  EXPECT_TRUE(p.orthotropic_given);
+  const double A = (12.7 + 2 * 29.3) / std::sqrt(483.9 * 282.2);
+  EXPECT_NEAR(structure_dashpot(s.damping.structure, 207e9, 0.3).bending_stiffness,
+              std::sqrt(483.9 * 282.2 * (A + 1) / 2), 1e-12);
+  EXPECT_NEAR(olsson_bending_stiffness({100, 100, 30, 35}), 100.0, 100 * kRounding);
+}
+
+struct BadPlate {
+  const char* label;
+  std::string extra;
+  const char* field;
+};
+
+class FinitePlateBad : public ::testing::TestWithParam<BadPlate> {};
+
+// Each bad finite plate is one InputError naming its field (exit 2 at the command line).
+TEST_P(FinitePlateBad, NamesTheField) {
+  try {
+    parse_scene_toml(plate_scene(GetParam().extra), "bad.toml");
+    FAIL() << "accepted: " << GetParam().extra;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), GetParam().field) << e.what();
+  }
+}
+
+const std::string kEdges = "edges = \"simply-supported\"\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Structure, FinitePlateBad,
+    ::testing::Values(
+        BadPlate{"one_length", "length_x = 0.2\n" + kEdges, "structure.length_y"},
+        BadPlate{"other_length", "length_y = 0.2\n" + kEdges, "structure.length_x"},
+        BadPlate{"zero_length", "length_x = 0\nlength_y = 0.2\n" + kEdges, "structure.length_x"},
+        BadPlate{"inf_length", "length_x = 0.2\nlength_y = inf\n" + kEdges, "structure.length_y"},
+        BadPlate{"no_edges", "length_x = 0.2\nlength_y = 0.2\n", "structure.edges"},
+        BadPlate{"clamped", "length_x = 0.2\nlength_y = 0.2\nedges = \"clamped\"\n",
+                 "structure.edges"},
+        BadPlate{"free_edges", "length_x = 0.2\nlength_y = 0.2\nedges = \"free\"\n",
+                 "structure.edges"},
+        BadPlate{"edges_without_lengths", kEdges, "structure.edges"},
+        BadPlate{"impact_without_lengths", "impact_x = 0.1\n", "structure.impact_x"},
+        BadPlate{"impact_outside", std::string(kFiniteKeys) + "impact_x = 0.25\n",
+                 "structure.impact_x"},
+        BadPlate{"impact_on_edge", std::string(kFiniteKeys) + "impact_y = 0\n",
+                 "structure.impact_y"},
+        BadPlate{"three_ds", std::string(kFiniteKeys) + "D11 = 1\nD22 = 1\nD12 = 0.1\n",
+                 "structure.D66"},
+        BadPlate{"d_not_definite",
+                 std::string(kFiniteKeys) + "D11 = 1\nD22 = 1\nD12 = 1.5\nD66 = 0.3\n",
+                 "structure.D12"},
+        BadPlate{"d66_negative",
+                 std::string(kFiniteKeys) + "D11 = 1\nD22 = 1\nD12 = 0.1\nD66 = -0.3\n",
+                 "structure.D66"},
+        BadPlate{"ds_and_dstar",
+                 std::string(kFiniteKeys) +
+                     "D11 = 1\nD22 = 1\nD12 = 0.1\nD66 = 0.3\nbending_stiffness = 1\n",
+                 "structure.bending_stiffness"}),
+    [](const auto& info) { return std::string(info.param.label); });
+
+// Lengths with a bar are refused by name (a bar has no plate to be finite).
+TEST(FinitePlate, LengthsWithABarAreRefused) {
+  std::string text = plate_scene(kFiniteKeys);
+  text.replace(text.find("kind = \"plate\"\nthickness = 0.002"), 31, "kind = \"bar\"\narea = 1e-4");
+  try {
+    parse_scene_toml(text, "bar.toml");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "structure.length_x") << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace ivv

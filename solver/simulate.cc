@@ -167,6 +167,12 @@ void validate(const SimulationRequest& req) {
 
 ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req) {
   validate(req.scene);
+  if (req.scene.damping.kind == Damping::Kind::structure &&
+      req.scene.damping.structure.finite_plate())
+    throw InputError("structure.length_x",
+                     "a finite plate is modelled by its modes (ivv simulate), not by the "
+                     "paper's dashpot this command runs; without length_x and length_y the "
+                     "plate is infinite and its dashpot c = 8 sqrt(rho h D*) is used");
   validate(req.options);
   validate_parameters(req.law, req.parameters);
   const LawInfo& law = law_info(req.law);

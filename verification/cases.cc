@@ -14,6 +14,7 @@ const Registry& all_cases() {
     register_example_cases(reg);
     register_dem_cases(reg);
     register_structure_cases(reg);
+    register_plate_cases(reg);
     register_conformance_cases(reg);
     register_validation_cases(reg);
     return reg;

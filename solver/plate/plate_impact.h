@@ -1,0 +1,155 @@
+// A sphere striking a finite, simply supported Kirchhoff plate (docs/design.md §1 "A finite
+// plate"): the contact law between the impactor and the plate's modes, no dashpot.
+//
+//   m alpha'' = -F                                   impactor, alpha [m] towards the plate
+//   u_k''     = -omega_k^2 u_k + g_k F              kept modes (plate_modes.h), u_k [m]
+//   z         = alpha - sum_kept u_k - C_res F       spring deformation [m]
+//   F         = f(z; history) of the contact law     [N], F >= 0 (contact ends at F = 0)
+// with C_res = C_static - sum_kept g_k/omega_k^2 [m/N] the static compliance of the modes not
+// kept (mode acceleration): they deflect with the force, without inertia. With z_kin = alpha -
+// sum u_k the force solves the scalar equation
+//   F = f(z_kin - C_res F)
+// whose left side minus right side is strictly increasing in F (slope 1 + C_res f' >= 1 on every
+// branch, f' >= 0), so it has one root, in [min(0, f(z_kin)), max(0, f(z_kin))]; it is found by
+// Newton's method safeguarded by that bracket at every right-hand-side evaluation (to 4 ulp).
+// Integrated in the normalised variables of the law's scales (scene.h Scales: tau = t/T,
+// alpha/L, F/(m v0/T)); then omega_k T, g_k m and C_res m/T^2 are the modes' numbers.
+//
+// Events, each located by root finding on the step's interpolant (event_locator.h):
+//   loading:   zdot = 0 falling (alpha' = sum u_k': maximum compression; the law begins
+//              unloading at z_m), z = the law's segment end rising (the kink z_y);
+//   unloading: z = z_m rising (reloading: back on the loading branch the law was on at z_m; below
+//              z_m the unloading curve is retraced, elastically), zdot = 0 falling (a local
+//              maximum below z_m: recorded), z_kin = z_f falling (F = 0: separation).
+// Between contacts the flight is free and exact: alpha moves linearly, each mode is a free
+// harmonic oscillator (u_k cos + u_k'/omega_k sin). The next contact begins when z_kin rises
+// through z_f (the permanent set of the last unloading branch: a dented contact closes there).
+// Its onset is found by stepping with a rigorous bound, |z_kin''| <= M2 = sum omega_k^2 A_k
+// (A_k = sqrt(u_k^2 + (u_k'/omega_k)^2), constant in free flight): no crossing can occur before
+// the gap d closes under z_kin' s + M2 s^2/2 = d; where that step is shorter than 1/(20 omega_max)
+// the flight is probed at four points per such step instead (a contact shorter than a fifth of
+// that, ~1/60 of the shortest kept period, could be missed there). The motion ends when no
+// further contact is possible: the ball moving away (alpha' <= 0) and alpha + B < z_f with
+// B = sum_k A_k >= |sum u_k(t)| for all later t (each mode's amplitude is constant in flight).
+//
+// Outputs: the final COR e = -alpha'/v0 once no contact is possible; e_first at the first
+// separation (negative when the ball still moves towards the plate there); every contact's
+// start, end, impulse m (alpha'_start - alpha'_end) and peak force; F_max over all; the first
+// contact's duration t_contact; the total impulse m (v0 - alpha'_final). Energy ledger, checked
+// at every maximum of compression and every separation (docs/design.md §1):
+//   (1/2) m v0^2 = (1/2) m alpha'^2 + E_plate + (1/2) C_res F^2 + W_spring,
+//   E_plate = sum_k (u_k'^2 + omega_k^2 u_k^2)/(2 g_k) (kinetic + strain of the kept modes),
+//   W_spring = hysteresis_work(h) + stored_energy(h, z) on an unloading branch (law.h);
+// at the end W_spring = W_p, the plastic work.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "solver/law_parameters.h"
+#include "solver/law_registry.h"
+#include "solver/request_options.h"
+
+namespace ivv {
+
+struct PlateImpactOptions {
+  double rtol = 1e-10;  // per step, in the normalised state
+  double atol = 1e-12;
+  // Kept modes: omega <= cutoff * omega_s, omega_s = max(1/T, omega_local): T the law's time
+  // scale (scene.h Scales), omega_local = sqrt(k_H g_max) the contact spring against the plate's
+  // modal mass under the impactor (k_H = 1.5 K_h sqrt(z_mH), the Hertz stiffness at the
+  // half-space's maximum compression z_mH = (5 m v0^2/(4 K_h))^{2/5}, an upper bound of the
+  // contact's; g_max = 4/(rho h a b)). Modes faster than `cutoff` times both rates respond
+  // quasi-statically through C_res. (With 1/T alone the drop-weight coupon kept one mode and its
+  // e moved by 3e-4 per doubling of the cut-off: the heavy striker's own rate is slow, but the
+  // contact spring rings against the light plate at omega_local.)
+  double cutoff = 40.0;
+  std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
+  bool residual = true;           // false: drop C_res (plain truncation, for the convergence study)
+  // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h), or
+  // Boost.Odeint's dense dopri5 (a second integrator for the same equations).
+  enum class Stepper { dop853, odeint_dopri5 };
+  Stepper stepper = Stepper::dop853;
+  int max_contacts = 10000;
+  long max_steps = 20'000'000;  // integration steps + free-flight steps
+};
+
+struct PlateContact {
+  double t_start = 0.0, t_end = 0.0;  // [s]
+  double impulse = 0.0;               // int F dt over the contact [N s]
+  double peak_force = 0.0;            // [N]
+  double velocity_end = 0.0;          // alpha' at its end [m/s]
+};
+
+struct PlateEnergy {       // [J]
+  double initial = 0.0;    // (1/2) m v0^2
+  double kinetic = 0.0;    // (1/2) m alpha'^2 at the end
+  double plate = 0.0;      // E_plate at the end (kept modes)
+  double plastic = 0.0;    // W_p at the end
+  double max_error = 0.0;  // max |ledger residual| over the checks, relative to initial
+  int checks = 0;          // how many times the ledger was checked
+};
+
+struct PlateImpactResult {
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  bool ok = false;
+  std::string reason;      // why it failed (empty when ok)
+  double e = nan;          // -alpha'_final/v0 once no further contact is possible
+  double e_first = nan;    // -alpha'/v0 at the first separation
+  double F_max = nan;      // [N] over all contacts
+  double t_contact = nan;  // the first contact's duration [s]
+  double z_max = nan;      // largest spring deformation [m]
+  double impulse = nan;    // m (v0 - alpha'_final) [N s]
+  std::vector<PlateContact> contacts;
+  std::size_t mode_count = 0;
+  double omega_cut = nan;            // [rad/s]
+  double static_compliance = nan;    // C_static [m/N]
+  double residual_compliance = nan;  // C_res used [m/N] (0 when options.residual is false)
+  double plate_mass = nan;           // rho h a b [kg]
+  double excursion_bound = nan;      // B at the end [m]
+  double t_end = nan;                // when no further contact was possible [s]
+  PlateEnergy energy;
+  int compression_maxima = 0;  // maxima of z (zdot = 0 falling), all contacts
+  int reloads = 0;             // z rising back to z_m within a contact (loading on beyond it)
+  long steps = 0;              // integration steps (all contacts)
+  long free_flight_steps = 0;  // bound/probe steps between contacts
+  long rhs_evaluations = 0;
+};
+
+// One impact of the scene's impactor on its finite plate ([structure] with length_x, length_y)
+// with a built-in, rate-independent law. Throws InputError for a scene without a finite plate,
+// a rate-dependent or expression law (not modelled on a finite plate yet), a law needing a
+// yield strength the scene lacks, or too many modes. A computation that fails (a step that
+// cannot meet its tolerance, an event not resolved, too many contacts) returns ok = false and
+// the reason.
+PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
+                                        const LawParameters& parameters,
+                                        const PlateImpactOptions& options = {});
+
+// True when the scene's struck structure is a finite plate (its impact runs here).
+bool has_finite_plate(const Scene& scene);
+
+// A finite-plate impact as the command line asks for it: the scene with --v0, the law
+// (--law, --param), --rtol/--atol for the integration. Flags that describe a dashpot (--zeta,
+// --c, --lambda, --no-dashpot), an integrator other than auto, --dt, --max-steps, --model other
+// than auto/full and an expression law are refused by name (InputError): a finite plate has no
+// dashpot and runs its own integration.
+//
+// The truncation's cost in e is estimated by a second run at half the cut-off: with the residual
+// compliance e converges as cut-off^-3 (case plate.convergence.with-residual measures the
+// order: 3.0), so the error of the full run is about |e - e_half|/(2^3 - 1).
+struct PlateRun {
+  Scene scene;
+  LawKind law = LawKind::elastoplastic;
+  LawParameters parameters;
+  PlateImpactOptions options;
+  PlateImpactResult result;
+  double e_half_cutoff = std::numeric_limits<double>::quiet_NaN();     // e at cut-off/2
+  double truncation_error = std::numeric_limits<double>::quiet_NaN();  // |e - e_half|/7
+};
+PlateRun run_plate_simulation(const RequestOptions& options);
+
+}  // namespace ivv

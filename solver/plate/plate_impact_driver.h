@@ -1,0 +1,234 @@
+// The plate impact's driver (plate_impact.h): contacts integrated by a stepper with events
+// located on its interpolant, free flights advanced exactly, until no contact is possible.
+// A template on the law and on the stepper (start/step/interpolate, solver/steppers/dop853.h's
+// interface): Dop853Stepper over the vector state by default, OdeintDenseDopri5 as a second
+// integrator. Measured on the 5 mm ball on the 200 mm plate (866 modes, rtol 1e-10): 154 steps
+// with dop853 against 832 with dopri5, e the same to 1e-9.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "solver/event_locator.h"
+#include "solver/integrator_options.h"
+#include "solver/law.h"
+#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_system.h"
+
+namespace ivv {
+
+// A stepper for the plate: the hand-written ones from IntegratorOptions, odeint's adapter from
+// its tolerances and first step.
+template <class Stepper>
+Stepper make_plate_stepper(const PlateImpactOptions& opt) {
+  if constexpr (std::is_constructible_v<Stepper, const IntegratorOptions&>) {
+    IntegratorOptions io;
+    io.rtol = opt.rtol;
+    io.atol = opt.atol;
+    io.initial_dt = 1e-3;
+    return Stepper(io);
+  } else {
+    return Stepper(opt.rtol, opt.atol, 1e-3);
+  }
+}
+
+// Thrown inside the driver for a failed run; turned into ok = false and its reason.
+struct PlateRunFailure {
+  std::string reason;
+};
+
+template <class Law, class Stepper>
+class PlateImpactDriver {
+ public:
+  using System = PlateSystem<Law>;
+  using State = std::vector<double>;
+
+  PlateImpactDriver(const Law& law, const Scales& k, const PlateModes& modes, double m,
+                    const PlateImpactOptions& opt)
+      : law_(law),
+        sys_(law, k, modes, m, opt.residual),
+        scales_(k),
+        opt_(opt),
+        stepper_(make_plate_stepper<Stepper>(opt)) {}
+
+  // Runs the impact; fills the dynamical members of `out` (the caller fills the plate's facts).
+  void run(PlateImpactResult& out) {
+    State x(sys_.size(), 0.0);
+    x[1] = 1.0;  // alpha' = v0
+    double t = 0.0;
+    for (;;) {
+      if (static_cast<int>(out.contacts.size()) >= opt_.max_contacts)
+        throw PlateRunFailure{"more than " + std::to_string(opt_.max_contacts) + " contacts"};
+      run_contact(t, x, out);
+      if (out.contacts.size() == 1) out.e_first = -x[1];
+      if (!free_flight(t, x, out)) break;
+    }
+    finish(t, x, out);
+  }
+
+ private:
+  enum class Root { max_compression, segment_end, reload, separation };
+
+  // The spring deformation z_f where the current branch's force vanishes, normalised.
+  double zero_force_point() const {
+    return static_cast<double>(sys_.history.z_perm) / sys_.length();
+  }
+
+  // One contact from its onset (t, x) to its separation; (t, x) are left at the separation.
+  void run_contact(double& t, State& x, PlateImpactResult& out) {
+    PlateContact c;
+    c.t_start = t * scales_.time;
+    const double v_start = x[1];
+    stepper_.start(sys_, t, x);
+    for (;;) {
+      if (out.steps + out.free_flight_steps >= opt_.max_steps)
+        throw PlateRunFailure{"more than " + std::to_string(opt_.max_steps) + " steps"};
+      const StepResult r = stepper_.step(sys_);
+      ++out.steps;
+      if (!r.ok) throw PlateRunFailure{r.reason};
+      if (!sys_.failure().empty()) throw PlateRunFailure{sys_.failure()};
+      const std::optional<Root> hit = locate(t, x);
+      if (!hit && sys_.history.phase == Phase::unloading && System::z_kin(x) < zero_force_point())
+        throw PlateRunFailure{
+            "the force turned negative at t = " + std::to_string(t * scales_.time) +
+            " s without a located separation (a contact that began exactly "
+            "at its zero-force point)"};
+      if (!hit) continue;
+      if (*hit == Root::separation) break;
+      on_event(*hit, x, c, out);
+      stepper_.start(sys_, t, x);
+    }
+    c.t_end = t * scales_.time;
+    c.velocity_end = x[1] * scales_.velocity;
+    c.impulse = (v_start - x[1]) * scales_.energy / scales_.velocity;  // m v0 (alpha'_0 - alpha'_1)
+    out.contacts.push_back(c);
+    check_ledger(x, 0.0, out);
+  }
+
+  // The roots active on the current branch, earliest crossing on the last step: (t, x) set there.
+  std::optional<Root> locate(double& t, State& x) {
+    RootSet<3> set;
+    std::array<Root, 3> meaning{};
+    const bool loading = sys_.history.phase == Phase::loading;
+    auto add = [&](Root r, Direction d) {
+      meaning[static_cast<std::size_t>(set.size)] = r;
+      set.add({d, false});
+    };
+    add(Root::max_compression, Direction::falling);
+    std::optional<double> z_end;
+    if (loading) z_end = law_.segment_end(sys_.history);
+    if (z_end) add(Root::segment_end, Direction::rising);
+    if (!loading) add(Root::reload, Direction::rising);
+    if (!loading) add(Root::separation, Direction::falling);
+    // z_kin at which z reaches a given z: z + C f(z) (z_kin increases with z)
+    const double zk_end =
+        z_end ? *z_end / sys_.length() + sys_.compliance() * sys_.law_force(*z_end / sys_.length())
+              : 0.0;
+    const double zk_reload =
+        static_cast<double>(sys_.history.z_max) / sys_.length() + sys_.compliance() * reload_force_;
+    const double zk_zero = zero_force_point();
+    auto g = [&](int i, const State& s) {
+      switch (meaning[static_cast<std::size_t>(i)]) {
+        case Root::max_compression:
+          return System::z_kin_rate(s);
+        case Root::segment_end:
+          return System::z_kin(s) - zk_end;
+        case Root::reload:
+          return System::z_kin(s) - zk_reload;
+        case Root::separation:
+          return System::z_kin(s) - zk_zero;
+      }
+      return 0.0;
+    };
+    auto interp = [&](double tt, State& s) { stepper_.interpolate(sys_, tt, s); };
+    const auto ec = locate_earliest<3>(stepper_.t0(), stepper_.x0(), stepper_.t1(), stepper_.x1(),
+                                       interp, set, g, LocatorOptions{}, true);
+    if (!ec.t) {
+      t = stepper_.t1();
+      x = stepper_.x1();
+      return std::nullopt;
+    }
+    t = *ec.t;
+    stepper_.interpolate(sys_, t, x);
+    return meaning[static_cast<std::size_t>(ec.first)];
+  }
+
+  // A branch event inside a contact: the law's history changes, the peaks are recorded.
+  void on_event(Root r, const State& x, PlateContact& c, PlateImpactResult& out) {
+    switch (r) {
+      case Root::max_compression: {
+        ++out.compression_maxima;
+        const double zk = System::z_kin(x);
+        const double F = sys_.force(zk);
+        const double z = zk - sys_.compliance() * F;
+        c.peak_force = std::max(c.peak_force, F * sys_.force_scale());
+        out.z_max =
+            std::isnan(out.z_max) ? z * sys_.length() : std::max(out.z_max, z * sys_.length());
+        if (sys_.history.phase == Phase::loading) {
+          loading_history_ = sys_.history;
+          law_.begin_unloading(sys_.history, z * sys_.length());
+          reload_force_ = sys_.law_force(z);
+        }
+        check_ledger(x, F, out);
+        return;
+      }
+      case Root::segment_end:
+        law_.next_segment(sys_.history);
+        return;
+      case Root::reload:
+        ++out.reloads;
+        sys_.history = loading_history_;
+        return;
+      case Root::separation:
+        return;
+    }
+  }
+
+  // (1/2) = (1/2) alpha'^2 + E_plate + (1/2) C F^2 + W_spring, on an unloading branch.
+  void check_ledger(const State& x, double F, PlateImpactResult& out) {
+    const auto hysteresis = law_.hysteresis_work(sys_.history);
+    if (!hysteresis || sys_.history.phase != Phase::unloading) return;
+    const double z = (System::z_kin(x) - sys_.compliance() * F) * sys_.length();
+    const double spring =
+        (*hysteresis + static_cast<double>(law_.stored_energy(sys_.history, z))) / scales_.energy;
+    const double total =
+        0.5 * x[1] * x[1] + sys_.plate_energy(x) + 0.5 * sys_.compliance() * F * F + spring;
+    out.energy.max_error = std::max(out.energy.max_error, std::abs(total - 0.5) / 0.5);
+    ++out.energy.checks;
+  }
+
+  // The free flight from a separation (t, x): true with (t, x) at the next contact's onset,
+  // false when no further contact is possible (then (t, x) where that was established).
+  bool free_flight(double& t, State& x, PlateImpactResult& out);
+
+  void finish(double t, const State& x, PlateImpactResult& out) {
+    out.e = -x[1];
+    out.t_end = t * scales_.time;
+    out.energy.initial = 0.5 * scales_.energy;
+    out.energy.kinetic = 0.5 * x[1] * x[1] * scales_.energy;
+    out.energy.plate = sys_.plate_energy(x) * scales_.energy;
+    out.energy.plastic = law_.hysteresis_work(sys_.history).value_or(std::nan(""));
+    out.impulse = (1.0 - x[1]) * scales_.energy / scales_.velocity;
+    out.F_max = 0.0;
+    for (const PlateContact& c : out.contacts) out.F_max = std::max(out.F_max, c.peak_force);
+    out.t_contact = out.contacts.front().t_end - out.contacts.front().t_start;
+    out.rhs_evaluations = sys_.evaluations();
+    out.ok = true;
+  }
+
+  Law law_;
+  System sys_;
+  Scales scales_;
+  PlateImpactOptions opt_;
+  Stepper stepper_;
+  typename System::History loading_history_{};
+  double reload_force_ = 0.0;  // F(z_m) on the unloading branch, normalised
+};
+
+}  // namespace ivv
+
+#include "solver/plate/plate_free_flight.h"

@@ -1,0 +1,109 @@
+// The Navier modes of a simply supported, specially orthotropic Kirchhoff plate, seen from the
+// impact point, and its exact static compliance there (docs/design.md §1 "A finite plate").
+//
+// Plate a x b x h, density rho, bending stiffnesses D11, D22, D12, D66 [N m] (D16 = D26 = 0),
+// all four edges simply supported, point force F [N] at (x0, y0). Mode (m, n), m, n >= 1:
+//   W_mn(x, y) = sin(m pi x/a) sin(n pi y/b)                                        [-]
+//   modal mass  M = rho h a b/4                                                      [kg]
+//   omega_mn^2 = pi^4 [D11 (m/a)^4 + 2 H (m/a)^2 (n/b)^2 + D22 (n/b)^4]/(rho h),
+//                H = D12 + 2 D66                                                     [rad^2/s^2]
+// (S. G. Lekhnitskii, Anisotropic Plates, 1968, §62; A. W. Leissa, Vibration of Plates, NASA
+// SP-160, 1969, §11.2: the simply supported specially orthotropic plate has these modes
+// exactly; isotropic D11 = D22 = H = D.) With u_k = W_k(x0, y0) q_k the k-th mode's share of the
+// deflection under the force, M q'' + M omega^2 q = W_k(x0, y0) F becomes
+//   u_k'' = -omega_k^2 u_k + g_k F,   g_k = W_k(x0, y0)^2/M                          [1/kg]
+// and the deflection there is w = sum_k u_k. A mode with W_k(x0, y0)^2 < kNodalShape (a nodal
+// line through the impact point; sin(m pi/2) of an even m is ~1e-16, not 0) is not excited and
+// is not kept (its compliance, ~1e-32 of the rest, stays in the residual below).
+//
+// Static compliance at the impact point, w = C_static F [m/N]:
+//   C_static = sum_{m,n} g_mn/omega_mn^2
+//            = (4/(a b)) sum_m sin^2(m pi xi) (b^4/(pi^4 D22)) S_m,   xi = x0/a, eta = y0/b,
+//   S_m = sum_n sin^2(n pi eta)/((n^2 + r1)(n^2 + r2)),
+// r1, r2 the roots of s^2 + 2 (H/D22) mu^2 s + (D11/D22) mu^4 (mu = m b/a; Re r > 0, a complex
+// pair for most laminates, a double root r = mu^2 for an isotropic plate). The n-sum is exact by
+//   f(r) = sum_n sin^2(n pi eta)/(n^2 + r) = (pi/(4c)) [E(c, 0) - E(c, theta)],  c = sqrt(r),
+//   E(c, theta) = (e^{-c theta} + e^{-c (2 pi - theta)})/(1 - e^{-2 pi c}),  theta = 2 pi eta
+// (from sum_n cos(n theta)/(n^2 + c^2) = (pi/(2c)) cosh(c (pi - theta))/sinh(c pi) - 1/(2c^2),
+// 0 <= theta <= 2 pi; I. S. Gradshteyn & I. M. Ryzhik, Table of Integrals, 7th ed., 1.445.2),
+// written with decaying exponentials only (no overflow): S_m = (f(r1) - f(r2))/(r2 - r1), or
+// -f'(r) for roots closer than kDoubleRoot (then the double-root form's error is below
+// kDoubleRoot^2/4 relative and the partial fractions' cancellation is avoided). Once the
+// exponentials are below 1e-17 the m-term is exactly K sin^2(m pi xi)/m^3 (K from c = m c_hat),
+// so the m-sum stops at such an M and its tail is added as
+//   K sum_{m>M} sin^2(m pi xi)/m^3 = (K/2) [zeta_M(3) - sum_{m>M} cos(2 pi xi m)/m^3]
+// with zeta_M(3) = sum_{m>M} m^-3 by Euler-Maclaurin (error O(M^-8)) and the oscillating sum
+// bounded by Abel summation, |.| <= 1/((M + 1)^3 sin(pi xi)): that bound, (K/2) of it, is
+// `tail_bound` (below 1e-10 relative at the default M). This is the Navier double sum done
+// exactly in n; for the isotropic plate at its centre it equals Timoshenko & Woinowsky-Krieger's
+// single (Levy) series, TWK §30 eq. (f)/(g): w = alpha P a^2/D, alpha = 0.01160 for a square plate.
+//
+// Truncation: the modes with omega <= omega_cut are kept; the rest respond quasi-statically
+// (mode acceleration / residual flexibility):
+//   C_res = C_static - sum_kept g_k/omega_k^2                                       [m/N]
+// the compliance the impact model puts in series with the contact spring.
+//
+// Units: SI (m, kg, N m, rad/s, m/N).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "scene/structure.h"
+
+namespace ivv {
+
+// W(x0, y0)^2 below which a mode counts as not excited (see above).
+inline constexpr double kNodalShape = 1e-24;
+// Relative distance |r1 - r2|/|r1| below which the two roots are treated as one (see above).
+inline constexpr double kDoubleRoot = 1e-5;
+
+struct PlateMode {
+  int m = 0, n = 0;    // half-waves along x and y
+  double omega = 0.0;  // [rad/s]
+  double shape = 0.0;  // W(x0, y0) [-]
+  double gain = 0.0;   // g = W(x0, y0)^2/(rho h a b/4) [1/kg]
+};
+
+// omega_mn [rad/s] of the formula above.
+double plate_mode_frequency(const FinitePlate& p, int m, int n);
+
+struct StaticCompliance {
+  double value = 0.0;       // C_static [m/N]
+  double tail_bound = 0.0;  // bound on its truncation error [m/N] (the Abel bound above)
+  int terms = 0;            // m-terms summed exactly (M)
+};
+StaticCompliance plate_static_compliance(const FinitePlate& p);
+
+struct PlateModeOptions {
+  double omega_cut = 0.0;          // keep the modes with omega <= omega_cut [rad/s]
+  std::size_t max_modes = 200000;  // more kept modes than this is bad input (InputError)
+};
+
+struct PlateModes {
+  std::vector<PlateMode> modes;        // kept, by increasing omega
+  double omega_cut = 0.0;              // [rad/s]
+  double modal_mass = 0.0;             // rho h a b/4 [kg]
+  StaticCompliance static_compliance;  // C_static
+  double kept_compliance = 0.0;        // sum_kept g/omega^2 [m/N]
+  double residual_compliance = 0.0;    // C_res = C_static - kept [m/N]
+};
+
+// The kept modes and the compliances. Throws InputError("structure", ...) when more than
+// max_modes modes lie below omega_cut (the message says how many, and that the infinite
+// plate may be the model wanted), std::invalid_argument for omega_cut not > 0 and finite.
+PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options);
+
+// The time a flexural wave needs to return to the impact point from the nearest edge, 2 d/c_g
+// [s], d = min(x0, a - x0, y0, b - y0), at the group velocity of the Kirchhoff plate at the
+// contact's own frequency omega_c = pi/t_contact: c_g = 2 (D*/(rho h))^{1/4} sqrt(omega_c) (D*
+// Olsson's effective stiffness; Graff, Wave Motion in Elastic Solids, 1975, §4.2: c_g = 2 c_p for
+// bending waves). Waves faster than that (higher frequencies) return earlier: a fact for
+// comparing with the contact time, not a bound.
+double flexural_return_time(const FinitePlate& p, double t_contact);
+
+// Number of excited modes (W(x0, y0)^2 >= kNodalShape) with omega <= omega_cut, without
+// storing them (the check above, and a cost estimate).
+std::size_t count_plate_modes(const FinitePlate& p, double omega_cut);
+
+}  // namespace ivv

@@ -1,0 +1,125 @@
+// The right-hand side of the plate impact in normalised variables (plate_impact.h), a system
+// in the odeint sense, sys(x, dxdt, t), over the state
+//   x = [alpha, alpha', u_1, u_1', ..., u_N, u_N']   (alpha/L, alpha'/v0, u/L, u'/v0; t/T)
+// with the contact force from the law on its current branch through F = f(z_kin - C_res F).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "solver/law.h"
+#include "solver/plate/plate_modes.h"
+
+namespace ivv {
+
+template <class Law>
+class PlateSystem {
+ public:
+  using state_type = std::vector<double>;
+  using value_type = double;
+  using History = history_t<Law, double>;
+
+  // Modes from plate_modes(); m [kg] the impactor's mass; residual: use C_res or not.
+  PlateSystem(const Law& law, const Scales& k, const PlateModes& modes, double m, bool residual)
+      : law_(law), length_(k.length), force_scale_(k.force) {
+    const double T = k.time;
+    for (const PlateMode& md : modes.modes) {
+      omega_.push_back(md.omega * T);
+      omega2_.push_back(md.omega * T * md.omega * T);
+      gain_.push_back(md.gain * m);
+    }
+    compliance_ = residual ? modes.residual_compliance * m / (T * T) : 0.0;
+  }
+
+  std::size_t modes() const { return omega_.size(); }
+  std::size_t size() const { return 2 + 2 * omega_.size(); }
+  double omega(std::size_t k) const { return omega_[k]; }
+  double gain(std::size_t k) const { return gain_[k]; }
+  double compliance() const { return compliance_; }    // C_res, normalised
+  double length() const { return length_; }            // L [m]
+  double force_scale() const { return force_scale_; }  // [N]
+
+  History history;  // the law's branch, changed by the driver at events only
+
+  // z_kin = alpha - sum u_k and its rate alpha' - sum u_k'
+  static double z_kin(const state_type& x) {
+    double w = 0.0;
+    for (std::size_t i = x.size() - 2; i >= 2; i -= 2) w += x[i];
+    return x[0] - w;
+  }
+  static double z_kin_rate(const state_type& x) {
+    double w = 0.0;
+    for (std::size_t i = x.size() - 1; i >= 3; i -= 2) w += x[i];
+    return x[1] - w;
+  }
+
+  // The law's force and stiffness at normalised z on the current branch.
+  double law_force(double z) const { return law_.force(history, z * length_, 0.0) / force_scale_; }
+  double law_stiffness(double z) const {
+    return law_.stiffness(history, z * length_, 0.0) * length_ / force_scale_;
+  }
+
+  // F solving F = f(z_kin - C F) (plate_impact.h); NaN, and failure() says why, when the
+  // safeguarded Newton iteration does not converge in 200 steps.
+  double force(double zk) const {
+    const double f0 = law_force(zk);
+    if (compliance_ == 0.0 || f0 == 0.0 || !std::isfinite(f0)) return f0;
+    double lo = std::min(0.0, f0), hi = std::max(0.0, f0);
+    double F = f0 / (1.0 + compliance_ * law_stiffness(zk));
+    for (int it = 0; it < 200; ++it) {
+      const double z = zk - compliance_ * F;
+      const double G = F - law_force(z);
+      if (G == 0.0) return F;
+      (G > 0.0 ? hi : lo) = F;
+      double next = F - G / (1.0 + compliance_ * law_stiffness(z));
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (std::abs(next - F) <= 4e-16 * std::abs(next) + 1e-300 ||
+          hi - lo <= 4e-16 * std::max(std::abs(lo), std::abs(hi)))
+        return next;
+      F = next;
+    }
+    failure_ = "the contact force F = f(z_kin - C_res F) did not converge at z_kin = " +
+               std::to_string(zk);
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // The spring deformation z = z_kin - C F of a state.
+  double spring(const state_type& x) const {
+    const double zk = z_kin(x);
+    return zk - compliance_ * force(zk);
+  }
+
+  void operator()(const state_type& x, state_type& dxdt, double) const {
+    ++evaluations_;
+    const double F = force(z_kin(x));
+    dxdt[0] = x[1];
+    dxdt[1] = -F;
+    for (std::size_t k = 0, i = 2; k < omega_.size(); ++k, i += 2) {
+      dxdt[i] = x[i + 1];
+      dxdt[i + 1] = -omega2_[k] * x[i] + gain_[k] * F;
+    }
+  }
+
+  // E_plate = sum (u'^2 + omega^2 u^2)/(2 g), normalised by m v0^2.
+  double plate_energy(const state_type& x) const {
+    double e = 0.0;
+    for (std::size_t k = 0, i = 2; k < omega_.size(); ++k, i += 2)
+      e += (x[i + 1] * x[i + 1] + omega2_[k] * x[i] * x[i]) / (2.0 * gain_[k]);
+    return e;
+  }
+
+  const std::string& failure() const { return failure_; }
+  long evaluations() const { return evaluations_; }
+
+ private:
+  Law law_;
+  double length_, force_scale_;
+  std::vector<double> omega_, omega2_, gain_;
+  double compliance_ = 0.0;
+  mutable std::string failure_;
+  mutable long evaluations_ = 0;
+};
+
+}  // namespace ivv
