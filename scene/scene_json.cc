@@ -67,6 +67,25 @@ std::string text(const json& j, const std::string& name, const std::string& pref
   return v.get<std::string>();
 }
 
+// A finite plate's keys (absent or null: an infinite plate, as in files written before them).
+void finite_plate_from_json(const json& j, const std::string& prefix, Structure& st) {
+  st.length_x = optional_number(j, "length_x", prefix);
+  st.length_y = optional_number(j, "length_y", prefix);
+  st.impact_x = optional_number(j, "impact_x", prefix);
+  st.impact_y = optional_number(j, "impact_y", prefix);
+  if (j.contains("edges") && !j.at("edges").is_null()) {
+    const auto edges = plate_edges_from_name(text(j, "edges", prefix));
+    if (!edges) throw InputError(prefix + "edges", "must be \"simply-supported\"");
+    st.edges = *edges;
+  }
+  if (j.contains("orthotropic_bending") && !j.at("orthotropic_bending").is_null()) {
+    const json& d = j.at("orthotropic_bending");
+    const std::string in = prefix + "orthotropic_bending.";
+    st.bending = OrthotropicBending{number(d, "D11", in), number(d, "D22", in),
+                                    number(d, "D12", in), number(d, "D66", in)};
+  }
+}
+
 Structure structure_from_json(const json& j, const std::string& prefix) {
   Structure st;
   const std::string kind = text(j, "kind", prefix);
@@ -82,6 +101,7 @@ Structure structure_from_json(const json& j, const std::string& prefix) {
     st.bending_stiffness = number(j, "bending_stiffness", prefix);
   st.youngs_modulus = optional_number(j, "youngs_modulus", prefix);
   st.poisson_ratio = optional_number(j, "poisson_ratio", prefix);
+  finite_plate_from_json(j, prefix, st);
   return st;
 }
 
@@ -147,8 +167,8 @@ json scene_json(const Scene& s) {
 
 json structure_json(const Scene& s) {
   if (s.damping.kind != Damping::Kind::structure) return nullptr;
-  const auto& [kind, density, thickness, area, bending_stiffness, youngs_modulus, poisson_ratio] =
-      s.damping.structure;
+  const auto& [kind, density, thickness, area, bending_stiffness, youngs_modulus, poisson_ratio,
+               length_x, length_y, edges, impact_x, impact_y, bending] = s.damping.structure;
   const Structure& st = s.damping.structure;
   const StructureDashpot d = structure_dashpot(st, s.target_youngs_modulus, s.target_poisson_ratio);
   return {
@@ -164,6 +184,17 @@ json structure_json(const Scene& s) {
       {"c_bar", finite_or_null(d.c_bar)},
       {"c", finite_or_null(d.c)},
       {"formula", structure_formula(st)},
+      // a finite plate (null for an infinite one): its size, edges, impact point, D's
+      {"length_x", optional_json(length_x)},
+      {"length_y", optional_json(length_y)},
+      {"edges", edges ? json(std::string(plate_edges_name(*edges))) : json(nullptr)},
+      {"impact_x", optional_json(impact_x)},
+      {"impact_y", optional_json(impact_y)},
+      {"orthotropic_bending", bending ? json{{"D11", bending->D11},
+                                             {"D22", bending->D22},
+                                             {"D12", bending->D12},
+                                             {"D66", bending->D66}}
+                                      : json(nullptr)},
   };
 }
 

@@ -6,10 +6,12 @@ namespace ivv {
 
 std::vector<std::string> infinite_plate_warnings(const Scene& scene, const ImpactResult& r) {
   std::vector<std::string> out;
-  if (scene.damping.kind != Damping::Kind::structure || !scene.damping.structure.has_plate() ||
+  const Structure& st = scene.damping.structure;
+  // a finite plate is modelled as one (solver/plate/): its answer needs no such warning
+  if (scene.damping.kind != Damping::Kind::structure || !st.has_plate() || st.finite_plate() ||
       !r.ok())
     return out;
-  const double h = scene.damping.structure.thickness;
+  const double h = st.thickness;
   const std::string advice =
       "; give the plate's size (structure.length_x, structure.length_y, edges) to model the "
       "finite plate";

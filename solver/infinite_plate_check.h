@@ -30,8 +30,9 @@
 
 namespace ivv {
 
-// The warnings of the header for a run of `scene` (none when the scene has no plate dashpot,
-// or the run failed). Each is one sentence with the measured values and what to do.
+// The warnings of the header for a run of `scene` (none when the scene has no plate dashpot, its
+// plate is finite, or the run failed). Each is one sentence with the measured values and what to
+// do.
 std::vector<std::string> infinite_plate_warnings(const Scene& scene, const ImpactResult& result);
 
 }  // namespace ivv
