@@ -516,6 +516,11 @@ TEST(Cli, MessagesNameWhatTheUserGave) {
   const CliRun captured = ivv("fit-hc --scene paper --v0 10 --zeta 2");
   EXPECT_EQ(captured.exit_code, 1);
   EXPECT_EQ(captured.err.find(") :"), std::string::npos) << captured.err;
+  // zeta = 0 is refused, and the message says how to ask for no dashpot
+  const CliRun zero = ivv("simulate --scene paper --zeta 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--zeta"), std::string::npos) << zero.err;
+  EXPECT_NE(zero.err.find("--no-dashpot"), std::string::npos) << zero.err;
   const CliRun syntax = ivv("simulate --scene paper --force 'z++'");
   EXPECT_EQ(syntax.exit_code, 2);
   EXPECT_NE(syntax.err.find("syntax error"), std::string::npos) << syntax.err;

@@ -18,8 +18,16 @@ std::string consistency_failure(const ConsistencyMeasures& m, const IntegratorOp
   constexpr const char* advice =
       "; the integration error exceeds its tolerance: tighten --rtol/--atol (or --dt for rk4) "
       "or use another integrator";
-  if (!std::isfinite(m.ledger_residual) ||
-      std::abs(m.ledger_residual) > accumulated_error_bound(m.steps, opt)) {
+  if (!std::isfinite(m.ledger_residual)) {
+    // not an integration error: a quantity of the run left the double range (a dashpot so
+    // weak that zeta = sqrt(m K_y)/(2c) overflows, A = rho = 1e-200 for a bar, --lambda 1e300)
+    std::ostringstream os;
+    os << integrator << ": the energy ledger is not a finite number (residual " << m.ledger_residual
+       << "): a quantity of this run overflowed the double range, which no tolerance can mend; "
+          "check the scene's scales (an extremely weak dashpot makes zeta overflow)";
+    return os.str();
+  }
+  if (std::abs(m.ledger_residual) > accumulated_error_bound(m.steps, opt)) {
     std::ostringstream os;
     os.precision(3);
     os << integrator << ": the energy ledger does not close: residual " << m.ledger_residual

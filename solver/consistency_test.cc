@@ -29,5 +29,21 @@ TEST(NonFiniteOutcome, SuccessStatusBesideANaNBecomesANamedFailure) {
   EXPECT_TRUE(fail_non_finite_outcome(separated, "test"));
 }
 
+// A ledger that is NaN or infinite is an overflow, not an integration error: the reason says
+// so and does not advise a tighter tolerance (a bar with A = rho = 1e-200 printed "residual
+// -nan ... tighten --rtol/--atol"); a finite residual beyond the bound keeps that advice.
+TEST(ConsistencyFailure, ANonFiniteLedgerIsAnOverflowNotATolerance) {
+  IntegratorOptions opt;
+  ConsistencyMeasures m;
+  m.steps = 100;
+  m.ledger_residual = std::nan("");
+  const std::string overflow = consistency_failure(m, opt, "dop853");
+  EXPECT_NE(overflow.find("overflowed the double range"), std::string::npos) << overflow;
+  EXPECT_EQ(overflow.find("tighten"), std::string::npos) << overflow;
+  m.ledger_residual = 1.0;
+  const std::string error = consistency_failure(m, opt, "dop853");
+  EXPECT_NE(error.find("tighten --rtol/--atol"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace ivv

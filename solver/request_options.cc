@@ -75,7 +75,10 @@ void naming_overrides(const RequestOptions& o, Check check) {
   } catch (const InputError& e) {
     for (const Override& ov : overrides) {
       if (ov.given && e.field() == ov.field) {
-        const std::string message = std::string(e.what()).substr(e.field().size() + 2);
+        std::string message = std::string(e.what()).substr(e.field().size() + 2);
+        // zeta = 0 means "no dashpot" to a reader of the paper: say how to ask for that
+        if (std::string_view(ov.flag) == "--zeta" && o.zeta && *o.zeta == 0)
+          message += "; for an impact without a dashpot give --no-dashpot";
         throw InputError(std::string(ov.flag), message);
       }
     }
