@@ -11,10 +11,6 @@ namespace {
 
 using nlohmann::json;
 
-// JSON has no infinity or NaN: an absent or undefined value is null.
-json finite_or_null(double v) {
-  return std::isfinite(v) ? json(v) : json(nullptr);
-}
 json optional_json(const std::optional<double>& v) {
   return v ? json(*v) : json(nullptr);
 }
@@ -122,6 +118,10 @@ Damping damping_from_json(const json& j, const std::string& prefix) {
 }
 
 }  // namespace
+
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 const char* damping_kind_name(Damping::Kind kind) {
   switch (kind) {

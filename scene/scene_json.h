@@ -32,6 +32,9 @@
 
 namespace ivv {
 
+// JSON has no infinity or NaN: an absent or undefined value is null (every writer's rule).
+nlohmann::json finite_or_null(double v);
+
 nlohmann::json scene_json(const Scene& scene, const DerivedParameters& p);
 nlohmann::json scene_json(const Scene& scene);  // derive()s the scene (valid) itself
 // The [structure] of a scene: its inputs, each element's dashpot, the series c, the formula;
