@@ -1,5 +1,5 @@
 // ivv calibrate, ivv predict: a law's parameters fitted to measured restitution with their
-// uncertainty, and predictions with bands and the ASME V&V 20 comparison (issue 19). The flags
+// uncertainty, and predictions with bands and the ASME V&V 20 comparison. The flags
 // and the runs are in app/calibrate_command.h, on the library validation/.
 #include "app/calibrate_command.h"
 #include "app/command.h"

@@ -1,4 +1,4 @@
-// `ivv calibrate` and `ivv predict` (issue 19): the flags and the runs (app/calibrate.cc makes
+// `ivv calibrate` and `ivv predict`: the flags and the runs (app/calibrate.cc makes
 // them subcommands).
 //
 // ivv calibrate --scene S --data measured.csv --fit NAME[,NAME...] [--law L | --force EXPR]

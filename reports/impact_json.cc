@@ -18,7 +18,7 @@ nlohmann::json result_json(const ImpactResult& r) {
                       {"alpha", ev.alpha},
                       {"force", ev.force}});
   }
-  // A failed run has no outcome: its numbers are null, never a plausible 0 (issue 10 item 6).
+  // A failed run has no outcome: its numbers are null, never a plausible 0.
   // What happened before the failure stays: the steps, the evaluations, the events located.
   const bool failed = !r.ok();
   auto value = [failed](double v) { return failed ? nlohmann::json(nullptr) : nlohmann::json(v); };

@@ -353,7 +353,7 @@ void parse_target(const toml::table& tgt, Scene& s) {
 
 // The scene's `name`: a string of 1 to kMaxSceneNameLength printable characters (it is printed
 // and written into JSON sidecars and reports); absent: the file's stem. `name = 42` and names
-// with control characters were accepted (issue 21 item 14).
+// with control characters were accepted.
 constexpr std::size_t kMaxSceneNameLength = 200;
 std::string scene_name(const toml::table& root, const std::string& source_name) {
   const toml::node* node = root.get("name");
@@ -516,7 +516,7 @@ std::string read_scene_text(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError("--scene", "'" + path.string() + "' is a directory, not a scene file");
-  // opening a FIFO blocks until a writer comes, for ever if none does (issue 21 item 11)
+  // opening a FIFO blocks until a writer comes, for ever if none does
   const std::filesystem::file_status st = std::filesystem::status(path, ec);
   if (std::filesystem::is_fifo(st) || std::filesystem::is_socket(st) ||
       std::filesystem::is_block_file(st))

@@ -1,4 +1,4 @@
-// Calibration of a contact model to measured restitution (issue 19, item 1): weighted
+// Calibration of a contact model to measured restitution: weighted
 // nonlinear least squares by Ceres Solver, with the parameter covariance, identifiability,
 // and the chi-square test of the fit.
 //

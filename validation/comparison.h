@@ -1,4 +1,4 @@
-// Model comparison (issue 19, item 3): several laws fitted to the same data, ranked by the
+// Model comparison: several laws fitted to the same data, ranked by the
 // information criteria of their least-squares fits.
 //
 // With stated standard uncertainties the Gaussian log-likelihood is -chi^2/2 up to a constant

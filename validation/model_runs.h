@@ -4,8 +4,8 @@
 // project's one parallel loop (solver/parallel.h), results in velocity order whatever the
 // thread count.
 //
-// The tolerance rule (issue 19: "runs tight enough that the integration error is far below
-// the data's noise"). --model auto states the error it commits in e (in units of v0, as a
+// The tolerance rule (runs tight enough that the integration error is far below
+// the data's noise). --model auto states the error it commits in e (in units of v0, as a
 // stated bound: closed forms 1e-14, integrated routes 200-300 rtol, solver/integrator_choice.h).
 // A calibration asks for
 //     stated error <= kIntegrationShare * u_min,   kIntegrationShare = 1e-5,

@@ -1,4 +1,4 @@
-// Prediction with uncertainty and the ASME V&V 20 validation comparison (issue 19, item 2).
+// Prediction with uncertainty and the ASME V&V 20 validation comparison.
 //
 // Prediction band. ln theta ~ N(ln theta_hat, Sigma_ln) over the identifiable fitted
 // parameters (Sigma_ln,ij = Sigma_ij / (theta_i theta_j), Sigma the calibration's covariance,
