@@ -18,9 +18,9 @@ std::optional<double> number(const std::optional<std::string>& text, const std::
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
                      bool scene_required) {
-  auto* scene =
-      cmd.add_option("--scene", f.scene,
-                     "scene file (TOML, docs/design.md §5), 'paper' (Table 1), or a shipped scene's name");
+  auto* scene = cmd.add_option(
+      "--scene", f.scene,
+      "scene file (TOML, docs/design.md §5), 'paper' (Table 1), or a shipped scene's name");
   if (scene_required) scene->required();
   if (with_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");

@@ -1,6 +1,6 @@
 // Fuzz target: the measured-data reader (validation/measured_data.h parse_measured_data).
-// Contract under test (docs/design.md §7): any text is either data whose every value lies in its stated
-// range (v0 finite > 0, e finite >= 0, uncertainties finite > 0, F_max and t_contact finite
+// Contract under test (docs/design.md §7): any text is either data whose every value lies in its
+// stated range (v0 finite > 0, e finite >= 0, uncertainties finite > 0, F_max and t_contact finite
 // > 0), with a column marked present only when some row measured it, and which writes and
 // reads back unchanged; or an InputError naming the file; nothing else escapes.
 #include <cmath>

@@ -1,5 +1,5 @@
-// Undamped Hertz impact: closed form (docs/design.md §2 "Hertz, undamped"; Johnson, Contact Mechanics,
-// 1985, §11.1; paper eq 5).
+// Undamped Hertz impact: closed form (docs/design.md §2 "Hertz, undamped"; Johnson, Contact
+// Mechanics, 1985, §11.1; paper eq 5).
 //
 //   m z'' = -K_h z^{3/2},  z(0) = 0, z'(0) = v0.
 // Energy: (1/2) m v0^2 = (2/5) K_h z_m^{5/2}  =>  z_m = (5 m v0^2 / (4 K_h))^{2/5}.

@@ -118,12 +118,12 @@ double local_slope(double v0) {
 }
 
 TEST(UndampedElastoplastic, HighVelocitySlopeTendsToMinusOneQuarter) {
-  // Johnson (1985) ch. 11 and paper eq 21: e ~ v0^{-1/4} at high velocity. docs/design.md §3: assert
-  // the limit where it holds (within 0.005 at 1e4 v_y), not just above yield.
+  // Johnson (1985) ch. 11 and paper eq 21: e ~ v0^{-1/4} at high velocity. docs/design.md §3:
+  // assert the limit where it holds (within 0.005 at 1e4 v_y), not just above yield.
   constexpr double kSlopeTolerance = 0.005;
   EXPECT_NEAR(local_slope(1e4 * v_yield()), -0.25, kSlopeTolerance);
-  // ... and the approach is from below: docs/design.md §3 quotes about -0.257 near 15 v_y, steeper than
-  // the limit; 0.002 covers "about" at three printed digits.
+  // ... and the approach is from below: docs/design.md §3 quotes about -0.257 near 15 v_y, steeper
+  // than the limit; 0.002 covers "about" at three printed digits.
   constexpr double kQuotedTolerance = 0.002;
   EXPECT_NEAR(local_slope(15.0 * v_yield()), -0.257, kQuotedTolerance);
   EXPECT_LT(std::abs(local_slope(1e4 * v_yield()) + 0.25),

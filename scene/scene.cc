@@ -16,8 +16,8 @@
 namespace ivv {
 namespace {
 
-// Accepted ranges. They are wide on purpose (docs/design.md §6 asks for masses from 1e-6 to 1e3 kg and
-// velocities from 1e-6 to beyond 100 m/s); they exclude only the physically meaningless.
+// Accepted ranges. They are wide on purpose (docs/design.md §6 asks for masses from 1e-6 to 1e3 kg
+// and velocities from 1e-6 to beyond 100 m/s); they exclude only the physically meaningless.
 void require_positive_finite(std::string_view field, double v, const char* unit) {
   if (std::isfinite(v) && v > 0.0) return;  // no string built on the hot path
   require(false, field, std::string("a finite number > 0 ") + unit, v);

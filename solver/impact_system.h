@@ -161,9 +161,9 @@ struct ImpactSystem {
   // bounds a forward-invariant region R = {u > 0, w >= s1 u}: on its edge w = s1 u,
   //   (w - s1 u)' = F_bar (2 zeta s1 - 1) - s1 w >= k u (2 zeta s1 - 1) - s1^2 u = 0,
   // using 2 zeta s1 >= 1 (s1 s2 = k, s2 <= 2 zeta k) and that z' <= 0 throughout unloading (no
-  // reloading, docs/design.md §1), so F_bar >= k u holds all along. In R the impactor keeps approaching
-  // (w > 0) while the spring relaxes towards z_f: it never turns back, so the contact never
-  // ends (e = 0 exactly, no rebound at any time). Returns (w - s1 u) / (1 + s1), the margin
+  // reloading, docs/design.md §1), so F_bar >= k u holds all along. In R the impactor keeps
+  // approaching (w > 0) while the spring relaxes towards z_f: it never turns back, so the contact
+  // never ends (e = 0 exactly, no rebound at any time). Returns (w - s1 u) / (1 + s1), the margin
   // by which the state is inside R in units of an error in w and u (an error d in both moves
   // w - s1 u by at most (1 + s1) d); nullopt where the test does not apply (no floor, not
   // overdamped at z_f, u <= 0 or w <= 0).

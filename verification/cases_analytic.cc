@@ -38,7 +38,8 @@ Outcome hertz_undamped(IntegratorKind k) {
   return worst_case(w, default_settings_tolerance(k).value, "e, F_max, z_max, t_contact");
 }
 
-// Elastoplastic, no dashpot: the energy closed form (docs/design.md §2) with quadrature contact time.
+// Elastoplastic, no dashpot: the energy closed form (docs/design.md §2) with quadrature contact
+// time.
 Outcome elastoplastic_undamped(IntegratorKind k) {
   WorstError w;
   const DerivedParameters p = derive(paper_scene());

@@ -61,8 +61,8 @@ Outcome chung_ooi(const DemBenchmarkScene& t, IntegratorKind k) {
                         (s.free_target() ? ", body velocities" : ""));
 }
 
-// Test 3, normal component: Hertz with the Tsuji-type damping of DEM codes (docs/design.md §3) set for a
-// target e_t, as an expression law, once clamped (F >= 0) and once with tension until z = 0.
+// Test 3, normal component: Hertz with the Tsuji-type damping of DEM codes (docs/design.md §3) set
+// for a target e_t, as an expression law, once clamped (F >= 0) and once with tension until z = 0.
 // With damping ~ z^{1/4} sqrt(m* E* sqrt(R*)) the normalised equation has neither v0 nor the
 // material in it, so the delivered e depends on e_t alone: both materials must give the same e
 // (and e_t = 1, no damping, must give e = 1).

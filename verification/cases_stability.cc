@@ -1,5 +1,5 @@
-// Stability tier: the hard cases of docs/design.md §6. Each integrator either meets its tolerance or
-// says it could not; none returns a silently wrong COR.
+// Stability tier: the hard cases of docs/design.md §6. Each integrator either meets its tolerance
+// or says it could not; none returns a silently wrong COR.
 #include <cmath>
 
 #include "closed_forms/linear_model.h"

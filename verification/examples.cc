@@ -169,7 +169,8 @@ const ExampleRun& tsuji_example(double e_t, bool tension) {
   const std::string mode = tension ? "tension" : "clamped";
   return memoised("tsuji/" + mode + "/e=" + fmt(e_t), [e_t, tension, mode] {
     // F = K_h z^{3/2} + gamma_n dz/dt, gamma_n = -2 sqrt(5/6) beta sqrt(S_n m),
-    // S_n = 2 E* sqrt(R z), beta = ln e_t / sqrt(ln^2 e_t + pi^2)   (docs/design.md §3, LIGGGHTS hertz)
+    // S_n = 2 E* sqrt(R z), beta = ln e_t / sqrt(ln^2 e_t + pi^2)   (docs/design.md §3, LIGGGHTS
+    // hertz)
     const std::string force =
         "K_h*z^1.5 - 2*sqrt(5/6)*log(et)/sqrt(log(et)^2 + _pi^2)*sqrt(2*E_star*sqrt(R*z)*m)*zdot";
     const SimulationRequest req = expression(force, {{"et", e_t}}, tension);

@@ -1,5 +1,6 @@
 // The registry of verification cases: one list that feeds both ctest (verification_test, one
-// gtest per case) and `ivv verify` / `ivv report`, so the two can never disagree (docs/design.md §4).
+// gtest per case) and `ivv verify` / `ivv report`, so the two can never disagree (docs/design.md
+// §4).
 //
 // A case measures one number, compares it with a reference under a tolerance whose reason is
 // stated, and may carry plot data. Cases are plain functions registered explicitly by

@@ -9,10 +9,10 @@
 //     above round-off). Judged by convergence.rk4.events-at-step-ends and
 //     convergence.dp45.events-at-step-ends.
 //   * hard_case_study(): every double-precision integrator at its defaults (rtol = atol =
-//     1e-10; rk4 dt = 1e-3 in tau) on the hard scenes of docs/design.md §6 (a stiff dashpot, a grazing and
-//     a fast impact, a capture, Hunt-Crossley with mu v0 = 5), with an independent e where one
-//     exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of each
-//     run is recorded as information only: it is measured while other cases may run on other
+//     1e-10; rk4 dt = 1e-3 in tau) on the hard scenes of docs/design.md §6 (a stiff dashpot, a
+//     grazing and a fast impact, a capture, Hunt-Crossley with mu v0 = 5), with an independent e
+//     where one exists. Judged by stability.hard-cases.named-or-within-tolerance. The wall time of
+//     each run is recorded as information only: it is measured while other cases may run on other
 //     threads, and nothing is ever judged on it.
 //   * work_precision_study(quick): the work-precision diagrams (measure_work_precision)
 //     on the Table 1 scene at v0 = 1 m/s, zeta = 0.1 and on a stiff dashpot (zeta = 10), every
