@@ -469,39 +469,6 @@ py::dict calibrate(const PyScene& s, const py::dict& kw, const py::dict& fit_kw)
   return out;
 }
 
-// The band of `ivv predict --json` (and its V&V 20 comparison), as app/calibrate_command.cc
-// writes it: the prediction library returns structs, the program lists their fields.
-nlohmann::json prediction_json(const validation::Prediction& band,
-                               const std::optional<validation::ValidationComparison>& vv) {
-  nlohmann::json j = {{"samples", band.samples},
-                      {"seed", band.seed},
-                      {"redrawn", band.redrawn},
-                      {"held_at_start", band.held},
-                      {"band", nlohmann::json::array()}};
-  for (const auto& b : band.points)
-    j["band"].push_back({{"v0", b.v0},
-                         {"e", b.e_nominal},
-                         {"e_lo95", b.e_lo},
-                         {"e_hi95", b.e_hi},
-                         {"u_input", b.u_input},
-                         {"u_num", b.u_num}});
-  if (!vv) return j;
-  j["vv20"] = nlohmann::json::array();
-  for (const auto& p : vv->points)
-    j["vv20"].push_back({{"v0", p.v0},
-                         {"S", p.S},
-                         {"D", p.D},
-                         {"E", p.E},
-                         {"u_num", p.u_num},
-                         {"u_input", p.u_input},
-                         {"u_D", p.u_D},
-                         {"u_val", p.u_val},
-                         {"exceeds_2u_val", p.exceeds},
-                         {"line", p.line}});
-  j["exceeding"] = vv->exceeding;
-  return j;
-}
-
 // `ivv predict`: the calibration (its JSON text, or a file) over speeds, or against held-back
 // data (ASME V&V 20).
 py::dict predict(const py::dict& kw) {
@@ -538,7 +505,7 @@ py::dict predict(const py::dict& kw) {
   py::dict out;
   out["ok"] = band.ok();
   out["failure"] = band.ok() ? std::string() : band.failures.front();
-  out["json"] = to_python(prediction_json(band, vv));
+  out["json"] = to_python(validation::prediction_json(band, vv ? &*vv : nullptr));
   return out;
 }
 

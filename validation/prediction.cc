@@ -172,4 +172,34 @@ std::string ValidationComparison::summary() const {
   return os.str();
 }
 
+nlohmann::json prediction_json(const Prediction& band, const ValidationComparison* vv) {
+  nlohmann::json j = {{"samples", band.samples},
+                      {"seed", band.seed},
+                      {"redrawn", band.redrawn},
+                      {"held_at_start", band.held},
+                      {"band", nlohmann::json::array()}};
+  for (const auto& b : band.points)
+    j["band"].push_back({{"v0", b.v0},
+                         {"e", b.e_nominal},
+                         {"e_lo95", b.e_lo},
+                         {"e_hi95", b.e_hi},
+                         {"u_input", b.u_input},
+                         {"u_num", b.u_num}});
+  if (!vv) return j;
+  j["vv20"] = nlohmann::json::array();
+  for (const auto& p : vv->points)
+    j["vv20"].push_back({{"v0", p.v0},
+                         {"S", p.S},
+                         {"D", p.D},
+                         {"E", p.E},
+                         {"u_num", p.u_num},
+                         {"u_input", p.u_input},
+                         {"u_D", p.u_D},
+                         {"u_val", p.u_val},
+                         {"exceeds_2u_val", p.exceeds},
+                         {"line", p.line}});
+  j["exceeding"] = vv->exceeding;
+  return j;
+}
+
 }  // namespace ivv::validation

@@ -84,4 +84,8 @@ struct ValidationComparison {
 ValidationComparison compare_with_data(const CalibratedModel& model, const MeasuredData& data,
                                        const PredictionOptions& options);
 
+// The band of `ivv predict --json` and, with vv, its ASME V&V 20 comparison: the one JSON form
+// of a prediction, for the command line and the Python module alike.
+nlohmann::json prediction_json(const Prediction& band, const ValidationComparison* vv);
+
 }  // namespace ivv::validation
