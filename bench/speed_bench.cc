@@ -298,24 +298,13 @@ void add_auto_integrator_target(BenchReport& rep, bool quick, const Timing& timi
                                how.str(), "auto-choice"));
 }
 
-}  // namespace
-
-BenchReport run_bench(const BenchOptions& options,
-                      const std::function<void(const std::string&)>& progress) {
-  const auto run_start = std::chrono::steady_clock::now();
-  auto say = [&](const std::string& s) {
-    if (progress) progress(s);
-  };
-  BenchReport rep;
-  rep.machine = describe_machine();
-  const Timing timing = options.quick ? Timing{0.002, 3} : Timing{0.05, 5};
-  const std::vector<double> rtols =
-      options.quick
-          ? std::vector<double>{1e-6, 1e-8, 1e-10, 1e-12}
-          : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
-  const std::vector<double> dts =
-      options.quick ? std::vector<double>{1e-1, 1e-2, 1e-3}
-                    : std::vector<double>{1e-1, 5e-2, 2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4};
+// The paper scene at 0.1, 1 and 5 m/s, with and without the dashpot, every law and every
+// production integrator against the 50-digit reference; returns that reference for the paper
+// scene itself (elastoplastic, 1 m/s, zeta 0.1), which the peers are measured against.
+ImpactResult measure_paper_grid(const BenchOptions& options, const Timing& timing,
+                                const std::vector<double>& rtols, const std::vector<double>& dts,
+                                const std::function<void(const std::string&)>& say,
+                                BenchReport& rep) {
   ImpactResult paper_reference;
   for (double zeta : {0.0, 0.1}) {
     for (double v0 : {0.1, 1.0, 5.0}) {
@@ -349,35 +338,40 @@ BenchReport run_bench(const BenchOptions& options,
       }
     }
   }
-  {
-    const std::string label = scene_label(1.0, verification::kStiffSceneZeta);
-    // the linearized law is undefined there (z_m far below 2.25 z_y with so stiff a dashpot)
-    for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
-      SimulationRequest base;
-      base.scene = paper_at(1.0, verification::kStiffSceneZeta);
-      base.law = law;
-      SimulationRequest rq = base;
-      rq.integrator = IntegratorKind::dop853;
-      rq.options.rtol = rq.options.atol = kStiffReferenceTol;
-      say("bench: " + label + ", " + std::string(to_string(law)) + " (dop853 1e-13 reference)");
-      const ImpactResult ref = simulate(rq);
-      if (!ref.ok()) throw std::runtime_error("bench: stiff reference failed: " + ref.reason);
-      for (IntegratorKind k : production_integrators()) {
-        if (!traits(k).implicit && k != IntegratorKind::dop853) continue;
-        for (double s : rtols) {
-          if (k == IntegratorKind::dop853 && s < 1e-8) continue;  // near its own reference
-          SimulationRequest req = base;
-          req.integrator = k;
-          req.options.rtol = req.options.atol = s;
-          rep.points.push_back(measure(req, label, "dop853 at 1e-13", ref, s, timing));
-        }
+  return paper_reference;
+}
+
+// The stiff scene (zeta = kStiffSceneZeta): the implicit integrators and dop853 against dop853
+// at 1e-13.
+void measure_stiff_scene(const Timing& timing, const std::vector<double>& rtols,
+                         const std::function<void(const std::string&)>& say, BenchReport& rep) {
+  const std::string label = scene_label(1.0, verification::kStiffSceneZeta);
+  // the linearized law is undefined there (z_m far below 2.25 z_y with so stiff a dashpot)
+  for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
+    SimulationRequest base;
+    base.scene = paper_at(1.0, verification::kStiffSceneZeta);
+    base.law = law;
+    SimulationRequest rq = base;
+    rq.integrator = IntegratorKind::dop853;
+    rq.options.rtol = rq.options.atol = kStiffReferenceTol;
+    say("bench: " + label + ", " + std::string(to_string(law)) + " (dop853 1e-13 reference)");
+    const ImpactResult ref = simulate(rq);
+    if (!ref.ok()) throw std::runtime_error("bench: stiff reference failed: " + ref.reason);
+    for (IntegratorKind k : production_integrators()) {
+      if (!traits(k).implicit && k != IntegratorKind::dop853) continue;
+      for (double s : rtols) {
+        if (k == IntegratorKind::dop853 && s < 1e-8) continue;  // near its own reference
+        SimulationRequest req = base;
+        req.integrator = k;
+        req.options.rtol = req.options.atol = s;
+        rep.points.push_back(measure(req, label, "dop853 at 1e-13", ref, s, timing));
       }
     }
   }
-  say("bench: peers (GSL, odeint, SUNDIALS CVODE and ARKODE) on the paper scene");
-  rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
+}
 
-  say("bench: targets");
+// The per-impact targets on the paper and stiff scenes, from the measured points.
+void add_paper_targets(const Timing& timing, BenchReport& rep) {
   const std::string paper = scene_label(1.0, 0.1);
   std::string who8, who12, whos;
   const double t8 = best_us(rep.points, paper, "elastoplastic", 1e-8, false, &who8);
@@ -412,62 +406,90 @@ BenchReport run_bench(const BenchOptions& options,
                                "fastest point with max(err_e, err_F) <= 1e-6 (" + whos +
                                    "), elastoplastic, against dop853 at 1e-13",
                                "per-impact"));
-  {
-    // The 200 x 50 COR map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
-    // run_sweep, the sweep's own parallel loop: --model auto with --integrator auto on one and
-    // on two threads, and the full model (dop853) on one thread for the "auto is never slower"
-    // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts. Each timing is the
-    // median of three runs (the machines are noisy); all three maps come from this one run.
-    const int nv = options.quick ? 40 : 200, nz = options.quick ? 10 : 50;
-    SweepRequest sweep;
-    sweep.base.scene = paper_scene();
-    sweep.base.law = LawKind::elastoplastic;
-    sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
-    for (int i = 0; i < nv; ++i)
-      sweep.velocities.push_back(0.1 * std::pow(100.0, i / double(nv - 1)));
-    for (int j = 0; j < nz; ++j) sweep.zetas.push_back(j / double(nz - 1));
-    const double scale = (200.0 * 50.0) / (nv * nz);
-    auto time_map = [&](ModelKind model, bool auto_integrator, int threads, int* failed) {
-      SweepRequest r = sweep;
-      r.base.model = model;
-      r.base.auto_integrator = auto_integrator;
-      r.base.integrator = IntegratorKind::dop853;
-      r.threads = threads;
-      std::vector<double> runs;
-      for (int k = 0; k < 3; ++k) {
-        const auto t0 = std::chrono::steady_clock::now();
-        const std::vector<SweepPoint> points = run_sweep(r);
-        runs.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-        *failed = static_cast<int>(std::count_if(
-            points.begin(), points.end(), [](const SweepPoint& p) { return !p.result.ok(); }));
-      }
-      std::sort(runs.begin(), runs.end());
-      return runs[1] * scale;
-    };
-    int failed_auto = 0, failed_two = 0, failed_full = 0;
-    const double t_auto = time_map(ModelKind::automatic, true, 1, &failed_auto);
-    const double t_two = time_map(ModelKind::automatic, true, 2, &failed_two);
-    const double t_full = time_map(ModelKind::full, false, 1, &failed_full);
-    const std::string grid = options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "";
-    rep.targets.push_back(target(
-        "200 x 50 COR map at rtol 1e-8, --model auto, one thread", 0.1, "s", t_auto,
-        grid + "run_sweep, median of 3; " + std::to_string(failed_auto) +
-            " failed points (a failed point counts as a miss: the target asks for every point)",
-        "map"));
-    if (failed_auto > 0) rep.targets.back().met = false;
-    rep.targets.push_back(target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio",
-                                 t_two / t_auto,
-                                 grid + "two-thread time / one-thread time (" +
-                                     std::to_string(failed_two) + " failed points)",
-                                 "map"));
-    rep.targets.push_back(target("--model auto never more than 10% slower than the full model",
-                                 1.10, "ratio", t_auto / t_full,
-                                 grid + "auto / full (elastoplastic, dop853) on the same map, one "
-                                        "thread; the per-point error check is the case "
-                                        "autochoice.model",
-                                 "map"));
-  }
+}
+
+// The COR map through run_sweep: --model auto on one and two threads, the full model on one.
+void add_cor_map_targets(const BenchOptions& options, BenchReport& rep) {
+  // The 200 x 50 COR map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
+  // run_sweep, the sweep's own parallel loop: --model auto with --integrator auto on one and
+  // on two threads, and the full model (dop853) on one thread for the "auto is never slower"
+  // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts. Each timing is the
+  // median of three runs (the machines are noisy); all three maps come from this one run.
+  const int nv = options.quick ? 40 : 200, nz = options.quick ? 10 : 50;
+  SweepRequest sweep;
+  sweep.base.scene = paper_scene();
+  sweep.base.law = LawKind::elastoplastic;
+  sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
+  for (int i = 0; i < nv; ++i)
+    sweep.velocities.push_back(0.1 * std::pow(100.0, i / double(nv - 1)));
+  for (int j = 0; j < nz; ++j) sweep.zetas.push_back(j / double(nz - 1));
+  const double scale = (200.0 * 50.0) / (nv * nz);
+  auto time_map = [&](ModelKind model, bool auto_integrator, int threads, int* failed) {
+    SweepRequest r = sweep;
+    r.base.model = model;
+    r.base.auto_integrator = auto_integrator;
+    r.base.integrator = IntegratorKind::dop853;
+    r.threads = threads;
+    std::vector<double> runs;
+    for (int k = 0; k < 3; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::vector<SweepPoint> points = run_sweep(r);
+      runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      *failed = static_cast<int>(std::count_if(points.begin(), points.end(),
+                                               [](const SweepPoint& p) { return !p.result.ok(); }));
+    }
+    std::sort(runs.begin(), runs.end());
+    return runs[1] * scale;
+  };
+  int failed_auto = 0, failed_two = 0, failed_full = 0;
+  const double t_auto = time_map(ModelKind::automatic, true, 1, &failed_auto);
+  const double t_two = time_map(ModelKind::automatic, true, 2, &failed_two);
+  const double t_full = time_map(ModelKind::full, false, 1, &failed_full);
+  const std::string grid = options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "";
+  rep.targets.push_back(target(
+      "200 x 50 COR map at rtol 1e-8, --model auto, one thread", 0.1, "s", t_auto,
+      grid + "run_sweep, median of 3; " + std::to_string(failed_auto) +
+          " failed points (a failed point counts as a miss: the target asks for every point)",
+      "map"));
+  if (failed_auto > 0) rep.targets.back().met = false;
+  rep.targets.push_back(target(
+      "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", t_two / t_auto,
+      grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
+      "map"));
+  rep.targets.push_back(target("--model auto never more than 10% slower than the full model", 1.10,
+                               "ratio", t_auto / t_full,
+                               grid + "auto / full (elastoplastic, dop853) on the same map, one "
+                                      "thread; the per-point error check is the case "
+                                      "autochoice.model",
+                               "map"));
+}
+
+}  // namespace
+
+BenchReport run_bench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress) {
+  const auto run_start = std::chrono::steady_clock::now();
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+  BenchReport rep;
+  rep.machine = describe_machine();
+  const Timing timing = options.quick ? Timing{0.002, 3} : Timing{0.05, 5};
+  const std::vector<double> rtols =
+      options.quick
+          ? std::vector<double>{1e-6, 1e-8, 1e-10, 1e-12}
+          : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+  const std::vector<double> dts =
+      options.quick ? std::vector<double>{1e-1, 1e-2, 1e-3}
+                    : std::vector<double>{1e-1, 5e-2, 2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4};
+  const ImpactResult paper_reference = measure_paper_grid(options, timing, rtols, dts, say, rep);
+  measure_stiff_scene(timing, rtols, say, rep);
+  say("bench: peers (GSL, odeint, SUNDIALS CVODE and ARKODE) on the paper scene");
+  rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
+
+  say("bench: targets");
+  add_paper_targets(timing, rep);
+  add_cor_map_targets(options, rep);
   say("bench: the speed targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
   add_peer_ratio_targets(rep);
   add_map_targets(rep, options.quick);
