@@ -154,33 +154,8 @@ SectionResult guarded(const std::string& name, const SectionOptions& so, F&& f) 
 
 // ---- section 1 ---------------------------------------------------------------------------
 
-std::string summary_html(const std::vector<CaseRecord>& records, const Provenance& prov,
-                         const ReportOptions& opt, const std::vector<std::string>& section_errors,
-                         const std::vector<std::pair<std::string, double>>& stage_seconds) {
-  std::size_t failed = 0;
-  for (const auto& r : records) failed += r.outcome.passed ? 0 : 1;
-  const bool ok = failed == 0 && section_errors.empty();
-  std::string out = "<h2 id=\"summary\" class=\"first\">1. Summary</h2>\n";
-  out += std::string("<div class=\"verdict ") + (ok ? "pass" : "fail") + "\" id=\"verdict\">";
-  if (ok) {
-    out += "PASS: all " + std::to_string(records.size()) + " verification cases passed";
-  } else {
-    out += "FAIL: " + std::to_string(failed) + " of " + std::to_string(records.size()) +
-           " verification cases failed";
-    if (!section_errors.empty())
-      out +=
-          ", " + std::to_string(section_errors.size()) + " report section(s) could not be computed";
-  }
-  out += "</div>\n";
-  if (opt.allow_failures && !ok)
-    out +=
-        "<p class=\"note\">Written with --allow-failures: failures do not change the exit "
-        "status of this run.</p>\n";
-  if (!opt.filter.empty() && opt.filter != "*")
-    out += "<p class=\"note\">Only the cases matching <code>" + escape(opt.filter) +
-           "</code> were run.</p>\n";
-
-  // Counts per tier.
+// The cases per evidence tier, passed and failed.
+std::string tier_counts_html(const std::vector<CaseRecord>& records) {
   std::vector<std::vector<std::string>> rows;
   for (Tier t : verification::all_tiers()) {
     std::size_t n = 0, pass = 0;
@@ -196,23 +171,14 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
          std::to_string(n), std::to_string(pass),
          n == pass ? "0" : "<span class=\"fail\">" + std::to_string(n - pass) + "</span>"});
   }
-  out += "<h3>Cases per evidence tier</h3>\n" + table({"tier", "cases", "passed", "failed"}, rows,
+  return "<h3>Cases per evidence tier</h3>\n" + table({"tier", "cases", "passed", "failed"}, rows,
                                                       Source::rows_are_cases(), "data counts");
+}
 
-  if (failed > 0 || !section_errors.empty()) {
-    out += "<h3 id=\"failures\">What fell short</h3>\n";
-    std::vector<std::vector<std::string>> frows;
-    for (const auto& r : records) {
-      if (r.outcome.passed) continue;
-      frows.push_back({"<a href=\"#" + case_anchor(r.c->id) + "\"><code>" + escape(r.c->id) +
-                           "</code></a><br>" + escape(r.c->title),
-                       escape(comparison_text(r.outcome)), escape(r.outcome.detail)});
-    }
-    for (const auto& e : section_errors) frows.push_back({"report section", "", escape(e)});
-    out +=
-        table({"case", "comparison", "detail"}, frows, Source::rows_are_cases(), "data failures");
-  }
-
+// What produced the report: commit, compiler, libraries, machine, command and run time.
+std::string provenance_html(const Provenance& prov, const ReportOptions& opt,
+                            const std::vector<std::pair<std::string, double>>& stage_seconds) {
+  std::string out;
   out += "<h3>Provenance</h3>\n<dl class=\"prov\">\n";
   auto item = [&](const std::string& k, const std::string& v) {
     out += "<dt>" + escape(k) + "</dt><dd>" + v + "</dd>\n";
@@ -242,6 +208,52 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
            std::to_string(worker_count(std::numeric_limits<std::size_t>::max(), opt.threads)) +
            " threads" + (opt.quick ? ", quick mode (fewer benchmark points)" : ""));
   out += "</dl>\n";
+  return out;
+}
+
+std::string summary_html(const std::vector<CaseRecord>& records, const Provenance& prov,
+                         const ReportOptions& opt, const std::vector<std::string>& section_errors,
+                         const std::vector<std::pair<std::string, double>>& stage_seconds) {
+  std::size_t failed = 0;
+  for (const auto& r : records) failed += r.outcome.passed ? 0 : 1;
+  const bool ok = failed == 0 && section_errors.empty();
+  std::string out = "<h2 id=\"summary\" class=\"first\">1. Summary</h2>\n";
+  out += std::string("<div class=\"verdict ") + (ok ? "pass" : "fail") + "\" id=\"verdict\">";
+  if (ok) {
+    out += "PASS: all " + std::to_string(records.size()) + " verification cases passed";
+  } else {
+    out += "FAIL: " + std::to_string(failed) + " of " + std::to_string(records.size()) +
+           " verification cases failed";
+    if (!section_errors.empty())
+      out +=
+          ", " + std::to_string(section_errors.size()) + " report section(s) could not be computed";
+  }
+  out += "</div>\n";
+  if (opt.allow_failures && !ok)
+    out +=
+        "<p class=\"note\">Written with --allow-failures: failures do not change the exit "
+        "status of this run.</p>\n";
+  if (!opt.filter.empty() && opt.filter != "*")
+    out += "<p class=\"note\">Only the cases matching <code>" + escape(opt.filter) +
+           "</code> were run.</p>\n";
+
+  out += tier_counts_html(records);
+
+  if (failed > 0 || !section_errors.empty()) {
+    out += "<h3 id=\"failures\">What fell short</h3>\n";
+    std::vector<std::vector<std::string>> frows;
+    for (const auto& r : records) {
+      if (r.outcome.passed) continue;
+      frows.push_back({"<a href=\"#" + case_anchor(r.c->id) + "\"><code>" + escape(r.c->id) +
+                           "</code></a><br>" + escape(r.c->title),
+                       escape(comparison_text(r.outcome)), escape(r.outcome.detail)});
+    }
+    for (const auto& e : section_errors) frows.push_back({"report section", "", escape(e)});
+    out +=
+        table({"case", "comparison", "detail"}, frows, Source::rows_are_cases(), "data failures");
+  }
+
+  out += provenance_html(prov, opt, stage_seconds);
   return out;
 }
 
@@ -624,6 +636,48 @@ void check_out_dir(const fs::path& dir) {
                                   "': " + (ec ? ec.message() : std::string("not a directory")));
 }
 
+// The page's heading (with its provenance) and table of contents.
+std::string report_heading(const Provenance& prov) {
+  std::string body =
+      "<header><h1>ivv verification report</h1>\n<p class=\"lead\">"
+      "Visco-elastoplastic impact model: verification cases, the paper's figures, "
+      "restitution trends and speed against error. Generated " +
+      escape(prov.date_utc) + " from commit <code>" + escape(prov.git_commit.substr(0, 12)) +
+      "</code>. Every figure and table says where its numbers come from: the verification "
+      "cases whose measurements it shows, or the label <i>Illustration</i> or <i>Timing, "
+      "information only</i>.</p></header>\n";
+  body +=
+      "<nav class=\"toc\"><b>Contents</b><ol>"
+      "<li><a href=\"#summary\">Summary</a></li>"
+      "<li><a href=\"#paper\">The paper reproduced</a></li>"
+      "<li><a href=\"#restitution\">Restitution trends</a></li>"
+      "<li><a href=\"#examples\">Contact-law worked examples</a></li>"
+      "<li><a href=\"#cases\">Every verification case</a></li>"
+      "<li><a href=\"#speed\">Speed against error</a></li>"
+      "<li><a href=\"#dem\">DEM benchmark: Chung &amp; Ooi (2011)</a></li>"
+      "<li><a href=\"#structure\">Damping from the structure</a></li>"
+      "<li><a href=\"#validation\">Validation against measurements (synthetic example)</a></li>"
+      "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
+  return body;
+}
+
+// index.html, results.json, series.csv and junit.xml, staged and committed together.
+void write_files(const fs::path& out_dir, const std::vector<verification::CaseRecord>& records,
+                 const FigureBook& book, const std::string& html, const SectionOptions& so) {
+  so.say("writing index.html, results.json, series.csv, junit.xml to " + out_dir.string());
+  {
+    // all four written first, then renamed into place: a full disk or any write error leaves
+    // none of them (a full disk once left results.json without index.html)
+    StagedFile results(out_dir / "results.json",
+                       [&](std::ostream& os) { os << results_json(records); });
+    StagedFile series(out_dir / "series.csv",
+                      [&](std::ostream& os) { os << series_csv(book.plots()); });
+    StagedFile junit(out_dir / "junit.xml", [&](std::ostream& os) { os << junit_xml(records); });
+    StagedFile index(out_dir / "index.html", [&](std::ostream& os) { os << html; });
+    for (StagedFile* f : {&results, &series, &junit, &index}) f->commit();
+  }
+}
+
 }  // namespace
 
 ReportSummary write_report(const ReportOptions& opt) {
@@ -685,26 +739,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   book.render(opt.threads, so);
   stages.emplace_back("plots", seconds_since(t0));
 
-  std::string body =
-      "<header><h1>ivv verification report</h1>\n<p class=\"lead\">"
-      "Visco-elastoplastic impact model: verification cases, the paper's figures, "
-      "restitution trends and speed against error. Generated " +
-      escape(prov.date_utc) + " from commit <code>" + escape(prov.git_commit.substr(0, 12)) +
-      "</code>. Every figure and table says where its numbers come from: the verification "
-      "cases whose measurements it shows, or the label <i>Illustration</i> or <i>Timing, "
-      "information only</i>.</p></header>\n";
-  body +=
-      "<nav class=\"toc\"><b>Contents</b><ol>"
-      "<li><a href=\"#summary\">Summary</a></li>"
-      "<li><a href=\"#paper\">The paper reproduced</a></li>"
-      "<li><a href=\"#restitution\">Restitution trends</a></li>"
-      "<li><a href=\"#examples\">Contact-law worked examples</a></li>"
-      "<li><a href=\"#cases\">Every verification case</a></li>"
-      "<li><a href=\"#speed\">Speed against error</a></li>"
-      "<li><a href=\"#dem\">DEM benchmark: Chung &amp; Ooi (2011)</a></li>"
-      "<li><a href=\"#structure\">Damping from the structure</a></li>"
-      "<li><a href=\"#validation\">Validation against measurements (synthetic example)</a></li>"
-      "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
+  std::string body = report_heading(prov);
   body += summary_html(records, prov, opt, section_errors, stages);
   body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
   body += "<h2 id=\"restitution\">3. Restitution trends</h2>\n" + restitution;
@@ -718,19 +753,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   body += companions_html();
   const std::string html = page("ivv verification report", book.resolve(body));
 
-  so.say("writing index.html, results.json, series.csv, junit.xml to " + opt.out_dir.string());
-  {
-    // all four written first, then renamed into place: a full disk or any write error leaves
-    // none of them (a full disk once left results.json without index.html)
-    StagedFile results(opt.out_dir / "results.json",
-                       [&](std::ostream& os) { os << results_json(records); });
-    StagedFile series(opt.out_dir / "series.csv",
-                      [&](std::ostream& os) { os << series_csv(book.plots()); });
-    StagedFile junit(opt.out_dir / "junit.xml",
-                     [&](std::ostream& os) { os << junit_xml(records); });
-    StagedFile index(opt.out_dir / "index.html", [&](std::ostream& os) { os << html; });
-    for (StagedFile* f : {&results, &series, &junit, &index}) f->commit();
-  }
+  write_files(opt.out_dir, records, book, html, so);
 
   ReportSummary summary;
   summary.cases = records.size();
