@@ -520,6 +520,51 @@ Outcome damping_map(const std::string& name) {
   return o;
 }
 
+// The paper's own claims (its Table 1 scene and Figs 4-14), one case each.
+void register_paper_claim_cases(Registry& reg) {
+  const Tier T = Tier::published_trend;
+  reg.add({"trend.paper.elastic-at-0.1-plastic-at-1-and-5",
+           "Table 1, c = 11440 N s/m: 0.1 m/s is elastic, 1 and 5 m/s are plastic", T,
+           "a sign: z_m/z_y on the right side of 1 at each velocity", false, elastic_and_plastic});
+  reg.add({"trend.paper.linear-close-to-nonlinear",
+           "Linear and nonlinear predictions are close at 1 and 5 m/s (Figs 4-7)", T,
+           "'close' read as F_max and contact time within 5%: differences the paper's force "
+           "histories (Figs 4, 6) would show as visibly separate curves",
+           false, linear_close_to_nonlinear});
+  reg.add({"trend.paper.displacement-after-force",
+           "With damping the maximum displacement comes after the maximum force (z_m < alpha_c)", T,
+           "strict order resolved above the event-time precision (1e-12) by a margin of 1e-6",
+           false, displacement_after_force});
+  reg.add({"trend.paper.hunt-crossley-fit",
+           "Hunt-Crossley fitted for Figs 2-7 reproduces the model's F_max and e", T,
+           "the fit solves mu to 2^-34 relative and scales K exactly (fit_hunt_crossley.h); each "
+           "of the runs is good to N rtol = 1e-9 at rtol 1e-12: 1e-8",
+           false, hunt_crossley_fit_reproduces});
+  reg.add({"trend.paper.fig14-cor-falls-with-zeta",
+           "Fig. 14: at every v0 of 0.01-10 m/s, e falls with zeta (0-0.5) until capture", T,
+           "each fall must exceed twice the error of e, N rtol = 1e-9 in units of v0 at rtol "
+           "1e-12 (N < 1000 steps), to be resolved",
+           false, fig14_falls_with_zeta});
+  reg.add({"trend.paper.fig8-yield-strength",
+           "Lower yield strength gives lower F_max and longer contact (Fig. 8)", T,
+           "monotone over four S_y, each step resolved above 1e-6 relative", false,
+           fig8_yield_strength});
+  reg.add({"trend.paper.fig9-mass", "Lower mass gives lower F_max and shorter contact (Fig. 9)", T,
+           "monotone over five masses, each step resolved above 1e-6 relative", false, fig9_mass});
+  reg.add({"trend.paper.fig12-13-damping",
+           "Higher zeta: lower F_max, longer contact, less permanent spring set (Figs 12-13)", T,
+           "monotone over six zeta (0-0.5), each step resolved above 1e-6 relative", false,
+           fig12_13_damping});
+  reg.add({"trend.paper.fig10-11-velocity",
+           "Higher v0: shorter normalised contact, more plastic deformation (Figs 10-11)", T,
+           "monotone over four v0, each step resolved above 1e-6 relative", false,
+           fig10_11_velocity});
+  reg.add({"trend.paper.hunt-crossley-longer-contact",
+           "Hunt-Crossley fitted to the same F_max and e over-predicts contact duration", T,
+           "a sign: t_HC/t_model > 1 (and alpha_c larger for the model, Fig. 5) at 1 and 5 m/s",
+           false, hunt_crossley_longer_contact});
+}
+
 }  // namespace
 
 void register_published_trend_cases(Registry& reg) {
@@ -568,46 +613,7 @@ void register_published_trend_cases(Registry& reg) {
            "e^2 approaches (2/3)(K_y/K_h)(K_y/(m v0^2))^{1/4} at high v0 (eq. 21)", T,
            "the binomial series bounds the neglected terms: between q/6 and q/6 + (2/27) q^2/(1-q)",
            false, eq21});
-  reg.add({"trend.paper.elastic-at-0.1-plastic-at-1-and-5",
-           "Table 1, c = 11440 N s/m: 0.1 m/s is elastic, 1 and 5 m/s are plastic", T,
-           "a sign: z_m/z_y on the right side of 1 at each velocity", false, elastic_and_plastic});
-  reg.add({"trend.paper.linear-close-to-nonlinear",
-           "Linear and nonlinear predictions are close at 1 and 5 m/s (Figs 4-7)", T,
-           "'close' read as F_max and contact time within 5%: differences the paper's force "
-           "histories (Figs 4, 6) would show as visibly separate curves",
-           false, linear_close_to_nonlinear});
-  reg.add({"trend.paper.displacement-after-force",
-           "With damping the maximum displacement comes after the maximum force (z_m < alpha_c)", T,
-           "strict order resolved above the event-time precision (1e-12) by a margin of 1e-6",
-           false, displacement_after_force});
-  reg.add({"trend.paper.hunt-crossley-fit",
-           "Hunt-Crossley fitted for Figs 2-7 reproduces the model's F_max and e", T,
-           "the fit solves mu to 2^-34 relative and scales K exactly (fit_hunt_crossley.h); each "
-           "of the runs is good to N rtol = 1e-9 at rtol 1e-12: 1e-8",
-           false, hunt_crossley_fit_reproduces});
-  reg.add({"trend.paper.fig14-cor-falls-with-zeta",
-           "Fig. 14: at every v0 of 0.01-10 m/s, e falls with zeta (0-0.5) until capture", T,
-           "each fall must exceed twice the error of e, N rtol = 1e-9 in units of v0 at rtol "
-           "1e-12 (N < 1000 steps), to be resolved",
-           false, fig14_falls_with_zeta});
-  reg.add({"trend.paper.fig8-yield-strength",
-           "Lower yield strength gives lower F_max and longer contact (Fig. 8)", T,
-           "monotone over four S_y, each step resolved above 1e-6 relative", false,
-           fig8_yield_strength});
-  reg.add({"trend.paper.fig9-mass", "Lower mass gives lower F_max and shorter contact (Fig. 9)", T,
-           "monotone over five masses, each step resolved above 1e-6 relative", false, fig9_mass});
-  reg.add({"trend.paper.fig12-13-damping",
-           "Higher zeta: lower F_max, longer contact, less permanent spring set (Figs 12-13)", T,
-           "monotone over six zeta (0-0.5), each step resolved above 1e-6 relative", false,
-           fig12_13_damping});
-  reg.add({"trend.paper.fig10-11-velocity",
-           "Higher v0: shorter normalised contact, more plastic deformation (Figs 10-11)", T,
-           "monotone over four v0, each step resolved above 1e-6 relative", false,
-           fig10_11_velocity});
-  reg.add({"trend.paper.hunt-crossley-longer-contact",
-           "Hunt-Crossley fitted to the same F_max and e over-predicts contact duration", T,
-           "a sign: t_HC/t_model > 1 (and alpha_c larger for the model, Fig. 5) at 1 and 5 m/s",
-           false, hunt_crossley_longer_contact});
+  register_paper_claim_cases(reg);
   reg.add({"trend.thornton-same-exponent",
            "Model and Thornton (1997) fall with the same exponent -1/4 at high v0", T,
            "Thornton's asymptote 1.185 r^{1/4} and eq. 21 share the exponent: the log-ratio "
