@@ -208,7 +208,8 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   void interpolate(const System& sys, T t, state_type& out) const {
     if (!dense_ready_) prepare_dense(sys);
     size_like(out, x1_);
-    for (std::size_t m = 0; m < x1_.size(); ++m) out[m] = dense(t, m);
+    const T th = (t - t0_) / (t1_ - t0_);
+    for (std::size_t m = 0; m < x1_.size(); ++m) out[m] = dense(th, m);
   }
   // The components listed in `which` only (the rest of `out` untouched): the event locator's
   // root functions read two of the six (ImpactSystem::event_components).
@@ -216,7 +217,8 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   void interpolate(const System& sys, T t, state_type& out,
                    const std::array<std::size_t, K>& which) const {
     if (!dense_ready_) prepare_dense(sys);
-    for (const std::size_t m : which) out[m] = dense(t, m);
+    const T th = (t - t0_) / (t1_ - t0_);
+    for (const std::size_t m : which) out[m] = dense(th, m);
   }
 
  private:
@@ -231,9 +233,8 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   using Base::x0_;
   using Base::x1_;
 
-  // Component m of the continuous extension at t (prepare_dense done).
-  T dense(T t, std::size_t m) const {
-    const T th = (t - t0_) / (t1_ - t0_);
+  // Component m of the continuous extension at theta = (t - t0)/h (prepare_dense done).
+  T dense(T th, std::size_t m) const {
     const T s1 = 1 - th;
     return x0_[m] +
            th * (r_[0][m] +

@@ -88,14 +88,16 @@ class Dp45Stepper : public AdaptiveStepState<System> {
 
   void interpolate(const System&, T t, state_type& out) const {
     size_like(out, x1_);
-    for (std::size_t i = 0; i < x1_.size(); ++i) out[i] = dense(t, i);
+    const T th = (t - t0_) / (t1_ - t0_);
+    for (std::size_t i = 0; i < x1_.size(); ++i) out[i] = dense(th, i);
   }
   // The components listed in `which` only (the rest of `out` untouched): the event locator's
   // root functions read two (ImpactSystem::event_components).
   template <std::size_t K>
   void interpolate(const System&, T t, state_type& out,
                    const std::array<std::size_t, K>& which) const {
-    for (const std::size_t i : which) out[i] = dense(t, i);
+    const T th = (t - t0_) / (t1_ - t0_);
+    for (const std::size_t i : which) out[i] = dense(th, i);
   }
 
  private:
@@ -146,11 +148,10 @@ class Dp45Stepper : public AdaptiveStepState<System> {
     return weighted_rms_norm(tmp, x0_, x1_, atol_, rtol_);
   }
 
-  // Component i of the continuous extension at t (the comment at the top of this file).
-  T dense(T t, std::size_t i) const {
+  // Component i of the continuous extension at theta = (t - t0)/h (the comment at the top).
+  T dense(T th, std::size_t i) const {
     using namespace dp45_tableau;
     const T h = t1_ - t0_;
-    const T th = (t - t0_) / h;
     const T om = 1 - th;
     const T r1 = x1_[i] - x0_[i];
     const T r2 = h * k1_[i] - r1;
