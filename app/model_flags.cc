@@ -56,8 +56,13 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   cmd.add_option("--model", f.model,
                  "auto: what the scene needs within --rtol (exact closed forms where they exist, "
                  "the linearized closed form where its estimated error is within --rtol, else "
-                 "the integrator); full: always integrate the law's ODE model")
+                 "the integrator); full: always integrate the law's ODE model. A finite plate "
+                 "also takes half-space, infinite-plate, quasi-static (solver/plate/"
+                 "plate_regime.h)")
       ->capture_default_str();
+  cmd.add_option("--model-tol", f.model_tolerance,
+                 "a finite plate: the tolerance of the model choice, in e (units of v0) and "
+                 "relative in F_max (default 1e-3)");
   cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
   cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
   cmd.add_option("--dt", f.dt,
@@ -90,6 +95,7 @@ RequestOptions to_options(const ModelFlags& f) {
   o.rtol = number(f.rtol, "--rtol");
   o.atol = number(f.atol, "--atol");
   o.dt = number(f.dt, "--dt");
+  o.model_tolerance = number(f.model_tolerance, "--model-tol");
   if (f.max_steps)
     o.max_steps = parse_count(*f.max_steps, "--max-steps", 1, std::numeric_limits<long>::max());
   o.hc_k = number(f.hc_k, "--hc-k");

@@ -22,6 +22,7 @@ struct ModelFlags {
   std::string integrator = "auto";
   std::string model = "auto";
   std::optional<std::string> rtol, atol, dt, max_steps;
+  std::optional<std::string> model_tolerance;  // a finite plate's choice of model
   std::optional<std::string> hc_k, hc_mu;
   std::vector<std::string> params;  // NAME=VALUE
   // expression law; given but empty is bad input (not "no expression")

@@ -8,7 +8,7 @@
 #include "reports/impact_text.h"
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
-#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_run.h"
 
 namespace ivv::app {
 namespace {

@@ -169,6 +169,52 @@ nlohmann::json plate_result_json(const PlateImpactResult& r) {
   };
 }
 
+nlohmann::json plate_model_json(const PlateModelOutcome& m) {
+  return {{"model", std::string(to_string(m.model))},
+          {"ok", m.ok},
+          {"reason", m.reason},
+          {"e", finite_or_null(m.e)},
+          {"F_max", finite_or_null(m.F_max)},
+          {"t_contact", finite_or_null(m.t_contact)},
+          {"error", finite_or_null(m.error)},
+          {"error_e", finite_or_null(m.error_e)},
+          {"error_F_max", finite_or_null(m.error_F)},
+          {"rhs_evaluations", m.rhs_evaluations}};
+}
+
+// The model the request was answered with, and the regime (solver/plate/plate_regime.h).
+nlohmann::json plate_model_choice_json(const PlateRun& run) {
+  const PlateRegime& g = *run.regime;
+  const PlateModelOutcome& a = *run.answer();
+  nlohmann::json models = nlohmann::json::array();
+  for (const PlateModelOutcome& m : g.models) models.push_back(plate_model_json(m));
+  return {{"requested", run.forced ? std::string(to_string(*run.forced)) : "auto"},
+          {"model", std::string(to_string(a.model))},
+          {"regime", g.regime},
+          {"tolerance", g.tolerance},
+          {"e", finite_or_null(a.e)},
+          {"F_max", finite_or_null(a.F_max)},
+          {"t_contact", finite_or_null(a.t_contact)},
+          {"estimated_error", finite_or_null(run.estimated_error())},
+          {"error_is",
+           "the answer's measured distance from the full plate (max of |de| in units of v0 and "
+           "|dF_max|/F_max) plus the full plate's truncation error"},
+          {"reasons", g.reasons},
+          {"models", models}};
+}
+
+nlohmann::json plate_regime_json(const PlateRegime& g) {
+  return {{"mass_ratio", finite_or_null(g.mass_ratio)},
+          {"wave_return_time", finite_or_null(g.wave_return_time)},
+          {"contact_time", finite_or_null(g.contact_time)},
+          {"relative_stiffness", finite_or_null(g.relative_stiffness)},
+          {"zeta_plate", finite_or_null(g.zeta_plate)},
+          {"c_plate", finite_or_null(g.c_plate)},
+          {"zener_lambda", finite_or_null(g.zener_lambda)},
+          {"regime", g.regime},
+          {"olsson_mass_criterion", g.olsson}};
+}
+
 }  // namespace
 
 nlohmann::json plate_simulation_json(const PlateRun& run) {
@@ -206,6 +252,8 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
          "static compliance C_res in series; error of e estimated as |e - e(cutoff/2)|/7 "
          "(observed order 3 in the cut-off)"}}},
       {"result", plate_result_json(run.result)},
+      {"regime", run.regime ? plate_regime_json(*run.regime) : nlohmann::json(nullptr)},
+      {"model_choice", run.regime ? plate_model_choice_json(run) : nlohmann::json(nullptr)},
   };
 }
 

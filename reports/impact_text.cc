@@ -156,6 +156,39 @@ std::string scene_summary(const Scene& s) {
   return out.str();
 }
 
+namespace {
+
+// The model the impact needs (solver/plate/plate_regime.h), and the answer it gives.
+std::string plate_regime_text(const PlateRun& run) {
+  const PlateRegime& g = *run.regime;
+  const PlateModelOutcome& a = *run.answer();
+  std::ostringstream out;
+  out.precision(6);
+  out << "  regime       " << g.regime << " (the cheapest model within " << g.tolerance
+      << " of the full plate in e and F_max); mass ratio " << g.mass_ratio << ", wave return "
+      << g.wave_return_time << " s against contact " << g.contact_time << " s, relative stiffness "
+      << g.relative_stiffness << "\n               infinite plate: zeta " << g.zeta_plate
+      << ", Zener lambda " << g.zener_lambda << ", c = " << g.c_plate << " N s/m\n";
+  for (const PlateModelOutcome& m : g.models) {
+    out << "    " << std::left << std::setw(16) << to_string(m.model);
+    if (!m.ok) {
+      out << "failed: " << m.reason << "\n";
+      continue;
+    }
+    out << "e = " << std::setw(12) << m.e << " F_max = " << std::setw(12) << m.F_max
+        << " N  t_contact = " << std::setw(12) << m.t_contact << " s";
+    if (m.model != PlateModel::full) out << "  error " << m.error;
+    out << "\n";
+  }
+  out << "  published    Olsson's mass criterion: " << g.olsson << "\n"
+      << "  answer       " << to_string(a.model) << (run.forced ? " (as asked by --model)" : "")
+      << ": e = " << a.e << ", F_max = " << a.F_max << " N, t_contact = " << a.t_contact
+      << " s, estimated error " << run.estimated_error() << "\n";
+  return out.str();
+}
+
+}  // namespace
+
 std::string plate_impact_summary(const PlateRun& run) {
   const PlateImpactResult& r = run.result;
   std::ostringstream out;
@@ -186,6 +219,7 @@ std::string plate_impact_summary(const PlateRun& run) {
       << r.energy.max_error << " over " << r.energy.checks << " checks)\n"
       << "  impulse      " << r.impulse << " N s = m (v0 - v_final); plate excursion bound "
       << r.excursion_bound << " m at t = " << r.t_end << " s\n";
+  if (run.regime) out << plate_regime_text(run);
   return out.str();
 }
 

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_run.h"
 #include "solver/request_options.h"
 
 namespace ivv {
@@ -23,7 +23,8 @@ std::string scene_summary(const Scene& scene);
 std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
 
 // A finite-plate impact: final e, e_first, the contacts (start, end, impulse, peak force),
-// F_max, the first contact's t_contact, the mode count and truncation, the energy ledger.
+// F_max, the first contact's t_contact, the mode count and truncation, the energy ledger,
+// then the regime: every model against the full plate, and the model that answers.
 std::string plate_impact_summary(const PlateRun& run);
 
 // Lines for `scene show` of a finite plate: size, impact point, D's, mass against the

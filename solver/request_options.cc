@@ -93,6 +93,10 @@ SimulationRequest to_request(const RequestOptions& o) {
 }
 
 SimulationRequest to_request(Scene scene, const RequestOptions& o) {
+  if (o.model_tolerance)
+    throw InputError("--model-tol",
+                     "the tolerance of a finite plate's choice of model; this scene has no "
+                     "finite plate (give [structure] length_x and length_y)");
   SimulationRequest req;
   req.scene = std::move(scene);
   apply_scene_overrides(o, req.scene);

@@ -37,6 +37,7 @@ struct RequestOptions {
   std::string model = "auto";         // auto or full (solver/model_choice.h)
   std::optional<double> rtol, atol;   // IntegratorOptions
   std::optional<double> dt;           // [-] rk4's fixed normalised step; > 0 when given
+  std::optional<double> model_tolerance;  // a finite plate's model choice (plate_regime.h)
   std::optional<long> max_steps;
   std::optional<double> hc_k;   // [N/m^1.5] Hunt-Crossley K (the law's parameter "K")
   std::optional<double> hc_mu;  // [s/m] Hunt-Crossley mu (the law's parameter "mu")

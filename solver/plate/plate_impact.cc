@@ -44,7 +44,9 @@ PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedPar
   const double k_H = 1.5 * p.K_h * std::sqrt(z_mH);
   const double omega_local = std::sqrt(k_H * 4.0 / (plate.mass()));
   const double omega_s = std::max(1.0 / k.time, omega_local);
-  const PlateModes modes = plate_modes(plate, {opt.cutoff * omega_s, opt.max_modes});
+  const PlateModes modes = opt.cutoff == 0.0
+                               ? static_plate_modes(plate)
+                               : plate_modes(plate, {opt.cutoff * omega_s, opt.max_modes});
   PlateImpactResult out;
   out.mode_count = modes.modes.size();
   out.omega_cut = modes.omega_cut;
@@ -90,58 +92,6 @@ PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
 
 bool has_finite_plate(const Scene& scene) {
   return scene.damping.kind == Damping::Kind::structure && scene.damping.structure.finite_plate();
-}
-
-namespace {
-
-void refuse_for_plate(bool given, const char* flag, const char* why) {
-  if (given) throw InputError(flag, std::string("not used with a finite plate (") + why + ")");
-}
-
-}  // namespace
-
-PlateRun run_plate_simulation(const RequestOptions& o) {
-  const char* dashpot =
-      "its modes carry the energy away; without length_x/length_y the plate "
-      "is infinite and has the dashpot";
-  refuse_for_plate(o.zeta.has_value(), "--zeta", dashpot);
-  refuse_for_plate(o.c.has_value(), "--c", dashpot);
-  refuse_for_plate(o.lambda.has_value(), "--lambda", dashpot);
-  refuse_for_plate(o.no_dashpot, "--no-dashpot", dashpot);
-  const char* own = "the plate's modes are integrated by dop853 with event location";
-  refuse_for_plate(o.integrator != "auto", "--integrator", own);
-  refuse_for_plate(o.dt.has_value(), "--dt", own);
-  refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);
-  refuse_for_plate(o.model != "auto" && o.model != "full", "--model",
-                   "the full plate model is the only one built for a finite plate");
-  refuse_for_plate(!o.expression.force.empty(), "--force",
-                   "an expression law is not modelled "
-                   "on a finite plate yet");
-  PlateRun run;
-  run.scene = load_scene(o.scene);
-  if (o.v0) {
-    require(std::isfinite(*o.v0) && *o.v0 > 0.0, "--v0", "a finite number > 0 m/s", *o.v0);
-    run.scene.velocity = *o.v0;
-  }
-  run.law = parse_law(o.law);
-  run.parameters = o.parameters;
-  if (o.rtol) run.options.rtol = *o.rtol;
-  if (o.atol) run.options.atol = *o.atol;
-  require(run.options.rtol > 0.0 && run.options.rtol < 1.0, "--rtol", "a number in (0, 1)",
-          run.options.rtol);
-  require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
-          run.options.atol);
-  run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
-  if (run.result.ok) {
-    PlateImpactOptions half = run.options;
-    half.cutoff /= 2.0;
-    const PlateImpactResult r = simulate_plate_impact(run.scene, run.law, run.parameters, half);
-    if (r.ok) {
-      run.e_half_cutoff = r.e;
-      run.truncation_error = std::abs(run.result.e - r.e) / 7.0;
-    }
-  }
-  return run;
 }
 
 }  // namespace ivv

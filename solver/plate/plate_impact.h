@@ -51,7 +51,6 @@
 #include "scene/scene.h"
 #include "solver/law_parameters.h"
 #include "solver/law_registry.h"
-#include "solver/request_options.h"
 
 namespace ivv {
 
@@ -66,7 +65,7 @@ struct PlateImpactOptions {
   // quasi-statically through C_res. (With 1/T alone the drop-weight coupon kept one mode and its
   // e moved by 3e-4 per doubling of the cut-off: the heavy striker's own rate is slow, but the
   // contact spring rings against the light plate at omega_local.)
-  double cutoff = 40.0;
+  double cutoff = 40.0;  // 0: no mode kept, the plate static (plate_regime.h's quasi-static)
   std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
   bool residual = true;           // false: drop C_res (plain truncation, for the convergence study)
   // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h), or
@@ -131,25 +130,5 @@ PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
 
 // True when the scene's struck structure is a finite plate (its impact runs here).
 bool has_finite_plate(const Scene& scene);
-
-// A finite-plate impact as the command line asks for it: the scene with --v0, the law
-// (--law, --param), --rtol/--atol for the integration. Flags that describe a dashpot (--zeta,
-// --c, --lambda, --no-dashpot), an integrator other than auto, --dt, --max-steps, --model other
-// than auto/full and an expression law are refused by name (InputError): a finite plate has no
-// dashpot and runs its own integration.
-//
-// The truncation's cost in e is estimated by a second run at half the cut-off: with the residual
-// compliance e converges as cut-off^-3 (case plate.convergence.with-residual measures the
-// order: 3.0), so the error of the full run is about |e - e_half|/(2^3 - 1).
-struct PlateRun {
-  Scene scene;
-  LawKind law = LawKind::elastoplastic;
-  LawParameters parameters;
-  PlateImpactOptions options;
-  PlateImpactResult result;
-  double e_half_cutoff = std::numeric_limits<double>::quiet_NaN();     // e at cut-off/2
-  double truncation_error = std::numeric_limits<double>::quiet_NaN();  // |e - e_half|/7
-};
-PlateRun run_plate_simulation(const RequestOptions& options);
 
 }  // namespace ivv

@@ -1,4 +1,5 @@
 #include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_run.h"
 
 #include <gtest/gtest.h>
 
@@ -179,6 +180,9 @@ TEST(PlateImpact, CommandLineOptionsForAFinitePlate) {
   EXPECT_EQ(field([](RequestOptions& o) { o.c = 100.0; }), "--c");
   EXPECT_EQ(field([](RequestOptions& o) { o.integrator = "dop853"; }), "--integrator");
   EXPECT_EQ(field([](RequestOptions& o) { o.v0 = -1.0; }), "--v0");
+  EXPECT_EQ(field([](RequestOptions& o) { o.model = "dashpot"; }), "--model");
+  EXPECT_EQ(field([](RequestOptions& o) { o.model_tolerance = 0.0; }), "--model-tol");
+  EXPECT_EQ(field([](RequestOptions& o) { o.model_tolerance = 1.5; }), "--model-tol");
   RequestOptions o;
   o.scene = file.string();
   o.law = "hertz";

@@ -161,4 +161,13 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
   return out;
 }
 
+PlateModes static_plate_modes(const FinitePlate& p) {
+  PlateModes out;
+  out.omega_cut = 0.0;
+  out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
+  out.static_compliance = plate_static_compliance(p);
+  out.residual_compliance = out.static_compliance.value;
+  return out;
+}
+
 }  // namespace ivv

@@ -93,6 +93,9 @@ struct PlateModes {
 // max_modes modes lie below omega_cut (the message says how many, and that the infinite
 // plate may be the model wanted), std::invalid_argument for omega_cut not > 0 and finite.
 PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options);
+// No mode kept: the whole plate responds statically, C_res = C_static (the quasi-static model
+// of plate_regime.h).
+PlateModes static_plate_modes(const FinitePlate& p);
 
 // The time a flexural wave needs to return to the impact point from the nearest edge, 2 d/c_g
 // [s], d = min(x0, a - x0, y0, b - y0), at the group velocity of the Kirchhoff plate at the

@@ -1,0 +1,82 @@
+#include "solver/plate/plate_run.h"
+
+#include <cmath>
+#include <string>
+
+#include "scene/input_error.h"
+
+namespace ivv {
+namespace {
+
+void refuse_for_plate(bool given, const char* flag, const char* why) {
+  if (given) throw InputError(flag, std::string("not used with a finite plate (") + why + ")");
+}
+
+void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
+  const char* dashpot =
+      "its modes carry the energy away; without length_x/length_y the plate "
+      "is infinite and has the dashpot";
+  refuse_for_plate(o.zeta.has_value(), "--zeta", dashpot);
+  refuse_for_plate(o.c.has_value(), "--c", dashpot);
+  refuse_for_plate(o.lambda.has_value(), "--lambda", dashpot);
+  refuse_for_plate(o.no_dashpot, "--no-dashpot", dashpot);
+  const char* own = "the plate's modes are integrated by dop853 with event location";
+  refuse_for_plate(o.integrator != "auto", "--integrator", own);
+  refuse_for_plate(o.dt.has_value(), "--dt", own);
+  refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);
+  refuse_for_plate(!o.expression.force.empty(), "--force",
+                   "an expression law is not modelled on a finite plate yet");
+}
+
+}  // namespace
+
+PlateModel PlateRun::answered() const {
+  if (forced) return *forced;
+  return regime ? regime->chosen() : PlateModel::full;
+}
+
+const PlateModelOutcome* PlateRun::answer() const {
+  return regime ? &regime->outcome(answered()) : nullptr;
+}
+
+double PlateRun::estimated_error() const {
+  const PlateModelOutcome* a = answer();
+  if (a == nullptr) return truncation_error;
+  return (a->model == PlateModel::full ? 0.0 : a->error) + truncation_error;
+}
+
+PlateRun run_plate_simulation(const RequestOptions& o) {
+  refuse_dashpot_and_integrator_flags(o);
+  PlateRun run;
+  run.forced = parse_plate_model(o.model);
+  const double tolerance = o.model_tolerance.value_or(kPlateModelTolerance);
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0, "--model-tol",
+          "a number in (0, 1)", tolerance);
+  run.scene = load_scene(o.scene);
+  if (o.v0) {
+    require(std::isfinite(*o.v0) && *o.v0 > 0.0, "--v0", "a finite number > 0 m/s", *o.v0);
+    run.scene.velocity = *o.v0;
+  }
+  run.law = parse_law(o.law);
+  run.parameters = o.parameters;
+  if (o.rtol) run.options.rtol = *o.rtol;
+  if (o.atol) run.options.atol = *o.atol;
+  require(run.options.rtol > 0.0 && run.options.rtol < 1.0, "--rtol", "a number in (0, 1)",
+          run.options.rtol);
+  require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
+          run.options.atol);
+  run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
+  if (!run.result.ok) return run;
+  PlateImpactOptions half = run.options;
+  half.cutoff /= 2.0;
+  const PlateImpactResult r = simulate_plate_impact(run.scene, run.law, run.parameters, half);
+  if (r.ok) {
+    run.e_half_cutoff = r.e;
+    run.truncation_error = std::abs(run.result.e - r.e) / 7.0;
+  }
+  run.regime =
+      plate_regime({run.scene, run.law, run.parameters, run.options}, run.result, tolerance);
+  return run;
+}
+
+}  // namespace ivv

@@ -1,0 +1,54 @@
+// A finite-plate impact as a front end asks for it (`ivv simulate` on a scene whose plate has
+// length_x and length_y): the full plate (plate_impact.h), its truncation error, and the model
+// the impact needs (plate_regime.h).
+//
+// From RequestOptions: the scene with --v0, the law (--law, --param), --rtol/--atol for every
+// model's integration, --model (auto, full, half-space, infinite-plate, quasi-static) and
+// --model-tol. Flags that describe a dashpot (--zeta, --c, --lambda, --no-dashpot), an
+// integrator other than auto, --dt, --max-steps and an expression law are refused by name
+// (InputError): a finite plate has no dashpot and runs its own integration.
+//
+// Every run integrates the full plate (the reference of the choice) and the three cheaper
+// models, and answers with
+//   --model auto   the cheapest model within --model-tol of the full plate (the regime);
+//   --model NAME   that model, with its measured distance from the full plate;
+// estimated error of the answer = its measured distance from the full plate + the full plate's
+// own truncation error (below).
+//
+// The truncation's cost in e is estimated by a second run at half the cut-off: with the residual
+// compliance e converges as cut-off^-3 (case plate.convergence.with-residual measures the
+// order: 3.0), so the error of the full run is about |e - e_half|/(2^3 - 1).
+#pragma once
+
+#include <limits>
+#include <optional>
+
+#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_regime.h"
+#include "solver/request_options.h"
+
+namespace ivv {
+
+struct PlateRun {
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  Scene scene;
+  LawKind law = LawKind::elastoplastic;
+  LawParameters parameters;
+  PlateImpactOptions options;
+  PlateImpactResult result;           // the full plate
+  double e_half_cutoff = nan;         // e at cut-off/2
+  double truncation_error = nan;      // |e - e_half|/7
+  std::optional<PlateModel> forced;   // --model other than auto
+  std::optional<PlateRegime> regime;  // when the full plate ran (result.ok)
+
+  // The model whose numbers answer the request: the forced one, or the regime's choice (the
+  // full plate when the full run failed).
+  PlateModel answered() const;
+  const PlateModelOutcome* answer() const;  // nullptr when the regime was not measured
+  // |answer - full| + truncation_error (NaN when unknown).
+  double estimated_error() const;
+};
+
+PlateRun run_plate_simulation(const RequestOptions& options);
+
+}  // namespace ivv
