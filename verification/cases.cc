@@ -15,6 +15,7 @@ const Registry& all_cases() {
     register_dem_cases(reg);
     register_structure_cases(reg);
     register_plate_cases(reg);
+    register_plate_regime_cases(reg);
     register_conformance_cases(reg);
     register_validation_cases(reg);
     return reg;

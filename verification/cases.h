@@ -20,7 +20,8 @@ void register_published_trend_cases(Registry& reg);
 void register_example_cases(Registry& reg);
 void register_dem_cases(Registry& reg);
 void register_structure_cases(Registry& reg);
-void register_plate_cases(Registry& reg);  // cases_plate.cc: the finite plate
+void register_plate_cases(Registry& reg);         // cases_plate.cc: the finite plate
+void register_plate_regime_cases(Registry& reg);  // which model a plate impact needs
 void register_conformance_cases(Registry& reg);
 void register_validation_cases(Registry& reg);
 
