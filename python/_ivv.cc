@@ -23,6 +23,7 @@
 #include "reports/impact_json.h"
 #include "scene/data_dir.h"
 #include "scene/input_error.h"
+#include "solver/plate/plate_run.h"
 #include "solver/request_options.h"
 #include "solver/sweep.h"
 #include "validation/calibration.h"
@@ -181,6 +182,7 @@ PyScene load(const std::string& source, const py::dict& kw) {
   if (dashpots > 1)
     throw InputError(o.zeta ? "--zeta" : "--c",
                      "give one of zeta, c, lambda_ and no_dashpot (they all set the dashpot)");
+  if (has_finite_plate(s.scene)) refuse_dashpot_and_integrator_flags(o);  // as simulate does
   s.scene = to_scene(s.scene, o);
   return s;
 }
@@ -192,8 +194,8 @@ py::object scene_dict(const PyScene& s) {
 // ---- requests ------------------------------------------------------------------------------
 
 const std::vector<std::string> kModelArgs = {
-    "law",    "integrator", "model",  "rtol",          "atol", "dt",   "max_steps",
-    "params", "force",      "unload", "allow_tension", "hc_k", "hc_mu"};
+    "law",    "integrator", "model",  "rtol",          "atol", "dt",    "max_steps",
+    "params", "force",      "unload", "allow_tension", "hc_k", "hc_mu", "model_tol"};
 
 // The options of a request on `s`: its overrides, and the law, integrator and tolerances of
 // `kw` (the keywords of ivv.simulate), checked as the command line checks its flags.
@@ -206,6 +208,7 @@ RequestOptions request_options(const PyScene& s, const py::dict& kw, const char*
   o.rtol = get<double>(kw, "rtol");
   o.atol = get<double>(kw, "atol");
   o.dt = get<double>(kw, "dt");
+  o.model_tolerance = get<double>(kw, "model_tol");
   o.max_steps = get<long>(kw, "max_steps");
   if (o.max_steps && *o.max_steps < 1)
     throw InputError("--max-steps", "must be an integer >= 1, got " + std::to_string(*o.max_steps));
@@ -252,6 +255,19 @@ py::dict trajectory_columns(const std::vector<TrajectoryPoint>& samples) {
 
 // (the simulate --json object, the trajectory columns or None)
 py::tuple simulate(const PyScene& s, const py::dict& kw, bool trajectory) {
+  if (has_finite_plate(s.scene)) {  // its modes, and the model it needs (ivv simulate's)
+    if (trajectory)
+      throw InputError("trajectory",
+                       "not written for a finite plate yet (its state is the "
+                       "impactor and every kept mode)");
+    const RequestOptions o = request_options(s, kw, "simulate()");
+    PlateRun run;
+    {
+      py::gil_scoped_release release;
+      run = run_plate_simulation(s.scene, o);
+    }
+    return py::make_tuple(to_python(plate_simulation_json(run)), py::none());
+  }
   SimulationRequest req = to_request(s.scene, request_options(s, kw, "simulate()"));
   std::vector<TrajectoryPoint> samples;
   SimulationRun run;

@@ -148,7 +148,9 @@ class SimulationResult(_Fields):
     Attributes are the keys of its "result" (status, reason, failure, e, e_poisson,
     e_energetic, F_max, t_contact, z_max, alpha_max, z_perm, separated, energy, steps, ...),
     then the top-level ones (scene, request, law, model_choice). ok is True when the run
-    separated or was captured. trajectory is None, or (simulate(trajectory=True)) a dict of
+    separated or was captured. On a finite plate (a scene with [structure] length_x, length_y)
+    they are those of its JSON: e, e_first, contacts, mode_count, ..., regime and model_choice
+    (the model the impact needs, every cheaper model measured against the full plate). trajectory is None, or (simulate(trajectory=True)) a dict of
     numpy arrays t, alpha, alpha_dot, y, z, F, tau, alpha_bar, F_bar.
     """
 
@@ -162,7 +164,10 @@ class SimulationResult(_Fields):
     @property
     def ok(self):
         """True when the impact separated or was captured (the CLI exits 0)."""
-        return self._dict["result"]["status"] in ("separated", "captured")
+        r = self._dict["result"]
+        if "status" not in r:  # a finite plate: ok, or the reason it failed
+            return bool(r.get("ok"))
+        return r["status"] in ("separated", "captured")
 
     @property
     def model_choice(self):
@@ -175,18 +180,21 @@ class SimulationResult(_Fields):
 
     def __repr__(self):
         r = self._dict["result"]
-        return f"<ivv.SimulationResult {r['status']}: e={r.get('e')} F_max={r.get('F_max')}>"
+        status = r.get("status", "ok" if r.get("ok") else "failed")
+        return f"<ivv.SimulationResult {status}: e={r.get('e')} F_max={r.get('F_max')}>"
 
 
 def simulate(scene, law=None, integrator="auto", model="auto", rtol=None,
              trajectory=False, *, atol=None, dt=None, max_steps=None, params=None, force=None,
-             unload=None, allow_tension=False, hc_k=None, hc_mu=None):
+             unload=None, allow_tension=False, hc_k=None, hc_mu=None, model_tol=None):
     """One impact, as `ivv simulate --json` computes it.
 
     scene       an ivv.Scene, or a name/path (then ivv.scene(name))
     law         "hertz", "elastoplastic" (the default), "linearized", "hunt-crossley"
     integrator  "auto" (dop853 or rodas4 by stiffness) or a name of `ivv integrators`
-    model       "auto": exact closed forms where they exist; "full": always integrate
+    model       "auto": exact closed forms where they exist; "full": always integrate; a
+                finite plate also takes "half-space", "infinite-plate", "quasi-static"
+    model_tol   a finite plate: the tolerance of its choice of model (default 1e-3)
     rtol, atol  tolerances (default 1e-10, 1e-12); dt: rk4's normalised step
     params      {name: value} of the law (--param); hc_k, hc_mu: Hunt-Crossley's K and mu
     force, unload, allow_tension  an expression law instead of `law` (--force, --unload)
@@ -199,6 +207,8 @@ def simulate(scene, law=None, integrator="auto", model="auto", rtol=None,
     s = _as_scene(scene)
     opts = _model_options(law, integrator, model, rtol, atol,
                           dt, max_steps, params, force, unload, allow_tension, hc_k, hc_mu)
+    if model_tol is not None:
+        opts["model_tol"] = model_tol
     json_dict, traj = _ivv._simulate(s._scene, opts, bool(trajectory))
     return SimulationResult(json_dict, traj)
 

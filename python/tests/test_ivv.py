@@ -150,6 +150,17 @@ def test_simulate_fields_and_model_choice():
     assert r.trajectory is None
 
 
+def test_a_finite_plate_names_its_model_as_the_cli_does():
+    r = ivv.simulate("drop-weight-coupon", model_tol=1e-2)
+    flags = ["--scene", "drop-weight-coupon", "--model-tol", "1e-2"]
+    assert as_printed(r.to_dict()) == cli_json("simulate", *flags)
+    assert r.ok and r.contact_count == 1 and 0.9 < r.e < 0.92
+    assert r.model_choice["model"] == "quasi-static"
+    assert r.regime["mass_ratio"] > 2
+    with pytest.raises(ivv.InputError, match="--zeta"):
+        ivv.simulate(ivv.scene("drop-weight-coupon", zeta=0.1))
+
+
 def test_law_and_force_together_are_refused():
     with pytest.raises(TypeError, match="not both"):
         ivv.simulate("paper", law="hertz", force="K_h*z^1.5")

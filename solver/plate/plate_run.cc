@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "scene/input_error.h"
 
@@ -11,6 +12,8 @@ namespace {
 void refuse_for_plate(bool given, const char* flag, const char* why) {
   if (given) throw InputError(flag, std::string("not used with a finite plate (") + why + ")");
 }
+
+}  // namespace
 
 void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
   const char* dashpot =
@@ -27,8 +30,6 @@ void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
   refuse_for_plate(!o.expression.force.empty(), "--force",
                    "an expression law is not modelled on a finite plate yet");
 }
-
-}  // namespace
 
 PlateModel PlateRun::answered() const {
   if (forced) return *forced;
@@ -47,12 +48,17 @@ double PlateRun::estimated_error() const {
 
 PlateRun run_plate_simulation(const RequestOptions& o) {
   refuse_dashpot_and_integrator_flags(o);
+  return run_plate_simulation(load_scene(o.scene), o);
+}
+
+PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
+  refuse_dashpot_and_integrator_flags(o);
   PlateRun run;
   run.forced = parse_plate_model(o.model);
   const double tolerance = o.model_tolerance.value_or(kPlateModelTolerance);
   require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0, "--model-tol",
           "a number in (0, 1)", tolerance);
-  run.scene = load_scene(o.scene);
+  run.scene = std::move(scene);
   if (o.v0) {
     require(std::isfinite(*o.v0) && *o.v0 > 0.0, "--v0", "a finite number > 0 m/s", *o.v0);
     run.scene.velocity = *o.v0;

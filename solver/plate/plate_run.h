@@ -50,5 +50,11 @@ struct PlateRun {
 };
 
 PlateRun run_plate_simulation(const RequestOptions& options);
+// The refusals above alone (InputError naming the flag), for a front end that applies the
+// overrides to a scene before it runs (the Python module's ivv.scene).
+void refuse_dashpot_and_integrator_flags(const RequestOptions& options);
+// The same for a scene the front end already holds (the Python module): options.scene is not
+// read.
+PlateRun run_plate_simulation(Scene scene, const RequestOptions& options);
 
 }  // namespace ivv
