@@ -17,6 +17,7 @@
 #include "reports/html.h"
 #include "reports/law_report.h"
 #include "reports/paper_figures.h"
+#include "reports/plate_regime_section.h"
 #include "reports/provenance.h"
 #include "reports/restitution.h"
 #include "reports/speed_error.h"
@@ -498,6 +499,10 @@ std::string structure_html(const SectionOptions& so, FigureBook& book) {
   out += "<h3>Similarity: four scenes at the same lambda</h3>\n" + s.similarity_table_html;
   out += "<h3>The paper's impactor on a plate</h3>\n" + book.add(s.figures.at(1));
   out += s.plate_properties_html;
+  const PlateRegimeSection p = plate_regime_section(so);
+  out += "<h3 id=\"plate-regime\">Where the infinite plate stops</h3>\n" + p.intro_html;
+  out += "<div class=\"grid2\">\n" + book.add(p.figures.at(0)) + book.add(p.figures.at(1)) +
+         "</div>\n" + book.add(p.figures.at(2)) + p.models_table_html;
   return out;
 }
 

@@ -157,6 +157,13 @@ PlateModel PlateRegime::chosen() const {
   return PlateModel::full;
 }
 
+std::string PlateRegime::regime_at(double other_tolerance) const {
+  for (const PlateModelOutcome& o : models)
+    if (o.model != PlateModel::full && o.ok && o.error <= other_tolerance)
+      return std::string(to_string(o.model));
+  return "plate-dynamics";
+}
+
 std::string olsson_mass_class(double mass_ratio) {
   if (mass_ratio < 0.23) return "small-mass (wave-controlled) impact, mass ratio < 0.23";
   if (mass_ratio > 2.0) return "large-mass (quasi-static) impact, mass ratio > 2";
@@ -189,8 +196,7 @@ PlateRegime plate_regime(const PlateImpactSpec& run, const PlateImpactResult& fu
 
   if (const PlateModelOutcome& hs = g.outcome(PlateModel::half_space); hs.ok)
     g.relative_stiffness = hs.F_max / hs.z_max * full.static_compliance;
-  const PlateModel m = g.chosen();
-  g.regime = m == PlateModel::full ? "plate-dynamics" : std::string(to_string(m));
+  g.regime = g.regime_at(tolerance);
   g.olsson = olsson_mass_class(g.mass_ratio);
   explain(g);
   return g;

@@ -100,6 +100,8 @@ struct PlateRegime {
   const PlateModelOutcome& outcome(PlateModel m) const;
   // The cheapest model within the tolerance (the full plate when none is).
   PlateModel chosen() const;
+  // The regime's name at another tolerance, from the measured errors (no new run).
+  std::string regime_at(double other_tolerance) const;
 };
 
 // The default tolerance of the choice: 1e-3 in e (units of v0) and relative in F_max. Tighter
