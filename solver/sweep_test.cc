@@ -99,7 +99,9 @@ TEST(SweepValidate, OutOfRangeGridValueNamesTheFlagNotTheSceneField) {
   EXPECT_EQ(field_of(req), "--v0");
 }
 
-TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
+// Inputs were written with 17 digits (0.10000000000000001), so that a reader's `v0 == 0.1`
+// matched nothing it had typed; the shortest form reads back as the same double all the same.
+TEST(SweepRows, InputsInShortestRoundTripFormAndFailedRowsNoNumbers) {
   ImpactResult failed;
   failed.status = ImpactStatus::failed;
   failed.reason = "step size underflow, \"quoted\"";
@@ -107,10 +109,10 @@ TEST(SweepRows, InputsHaveSeventeenDigitsAndFailedRowsNoNumbers) {
   failed.steps = 12;
   const std::string row = sweep_csv_row(0.1, 1.0 / 3.0, failed);
   EXPECT_EQ(row,
-            "0.10000000000000001,0.33333333333333331,,,,,,,,,,,12,integrated,none,failed,"
+            "0.1,0.3333333333333333,,,,,,,,,,,12,integrated,none,failed,"
             "\"step size underflow, \"\"quoted\"\"\"\n");
-  // 17 significant digits read back to the same double.
-  EXPECT_EQ(std::stod("0.33333333333333331"), 1.0 / 3.0);
+  // the shortest form reads back to the same double
+  EXPECT_EQ(std::stod("0.3333333333333333"), 1.0 / 3.0);
 
   ImpactResult ok;
   ok.status = ImpactStatus::separated;
