@@ -23,6 +23,7 @@
 #include "reports/impact_json.h"
 #include "scene/data_dir.h"
 #include "scene/input_error.h"
+#include "scene/scene_values.h"
 #include "solver/request_options.h"
 #include "solver/sweep.h"
 #include "validation/calibration.h"
@@ -295,12 +296,13 @@ py::array_t<double> numbers(const std::vector<double>& v) {
 
 // The columns of the sweep CSV (solver/sweep.h, sweep_csv_header()) from the results the CSV
 // is written from: a failed point has NaN where the CSV leaves its result columns empty.
-py::dict sweep_columns(const std::vector<SweepPoint>& points) {
+py::dict sweep_columns(const SweepRequest& req, const std::vector<SweepPoint>& points) {
   static const char* const result_names[] = {
       "e",         "e_poisson", "e_energetic", "F_max",  "t_F_max",
       "t_contact", "z_max",     "alpha_max",   "z_perm", "energy_residual"};
   const std::size_t n = points.size();
   std::vector<double> v0(n), zeta(n);
+  std::vector<std::vector<double>> axes(req.axes.size(), std::vector<double>(n));
   std::vector<std::vector<double>> results(std::size(result_names), std::vector<double>(n));
   py::array_t<long long> steps(static_cast<py::ssize_t>(n));
   auto steps_out = steps.mutable_unchecked<1>();
@@ -309,6 +311,7 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
     const ImpactResult& r = points[i].result;
     v0[i] = points[i].v0;
     zeta[i] = points[i].zeta;
+    for (std::size_t k = 0; k < axes.size(); ++k) axes[k][i] = points[i].axes[k];
     const double values[] = {r.e,         r.e_poisson, r.e_energetic, r.F_max,  r.t_F_max,
                              r.t_contact, r.z_max,     r.alpha_max,   r.z_perm, r.energy.residual};
     for (std::size_t k = 0; k < std::size(result_names); ++k)
@@ -322,6 +325,7 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
   py::dict out;
   out["v0"] = numbers(v0);
   out["zeta"] = numbers(zeta);
+  for (std::size_t k = 0; k < axes.size(); ++k) out[py::str(req.axes[k].key)] = numbers(axes[k]);
   for (std::size_t k = 0; k < std::size(result_names); ++k)
     out[result_names[k]] = numbers(results[k]);
   out["steps"] = steps;
@@ -332,9 +336,11 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
   return out;
 }
 
-// `ivv sweep` over v0 x zeta (zeta None: every point keeps the scene's own dashpot).
+// `ivv sweep` over v0 x zeta (zeta None: every point keeps the scene's own dashpot) x the scene
+// axes, each (key, values) as `--set KEY=...` (scene/scene_values.h).
 py::dict sweep(const PyScene& s, const std::vector<double>& v0,
-               const std::optional<std::vector<double>>& zeta, int threads, const py::dict& kw) {
+               const std::optional<std::vector<double>>& zeta, int threads, const py::dict& kw,
+               const std::vector<std::pair<std::string, std::vector<double>>>& axes) {
   SweepRequest req;
   req.base = to_request(s.scene, request_options(s, kw, "sweep()"));
   req.velocities = v0;
@@ -346,9 +352,11 @@ py::dict sweep(const PyScene& s, const std::vector<double>& v0,
     throw InputError("--zeta",
                      "required: the scene has no dashpot of its own (LO:HI:N or a,b,c; 0 = no "
                      "dashpot)");
+  for (const auto& [key, values] : axes) req.axes.push_back({key, values});
   req.threads = threads;
   validate(req);
-  return sweep_columns(run_interruptible(req));
+  const std::vector<SweepPoint> points = run_interruptible(req);
+  return sweep_columns(req, points);
 }
 
 // ---- check-law -----------------------------------------------------------------------------
@@ -539,7 +547,13 @@ PYBIND11_MODULE(_ivv, m) {
   m.def("_load_scene", &load, py::arg("source"), py::arg("overrides"));
   m.def("_simulate", &simulate, py::arg("scene"), py::arg("options"), py::arg("trajectory"));
   m.def("_sweep", &sweep, py::arg("scene"), py::arg("v0"), py::arg("zeta"), py::arg("threads"),
-        py::arg("options"));
+        py::arg("options"), py::arg("axes"));
+  m.def("_scene_values", [] {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const ivv::SceneValueInfo& v : ivv::scene_values())
+      out.emplace_back(std::string(v.key), std::string(v.unit));
+    return out;
+  });
   m.def("_check_law", &check_law, py::arg("scene"), py::arg("options"), py::arg("checks"));
   m.def("_calibrate", &calibrate, py::arg("scene"), py::arg("options"), py::arg("fit"));
   m.def("_predict", &predict, py::arg("options"));
