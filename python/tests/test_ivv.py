@@ -186,14 +186,16 @@ def read_sweep_csv(path):
         return list(csv.DictReader(f))
 
 
-def assert_columns_equal_csv(columns, rows):
+def assert_columns_equal_csv(columns, rows, inputs=("v0", "zeta")):
     assert list(columns) == list(rows[0]), "the columns of the CSV, in its order"
     for name, column in columns.items():
         assert len(column) == len(rows)
         for x, row in zip(column, rows):
             text = row[name]
-            if name in ("v0", "zeta"):
-                assert f"{x:.17g}" == text, name
+            if name in inputs:
+                # shortest round-trip form: the same double, in no more digits than repr's
+                assert float(text) == x or (math.isnan(x) and text == "nan"), name
+                assert len(text.replace("e+", "e")) <= len(repr(x)), (name, text, repr(x))
             elif name == "steps":
                 assert int(x) == int(text)
             elif column.dtype.kind == "f":
@@ -212,6 +214,42 @@ def test_sweep_equals_the_cli_csv(tmp_path):
     columns = ivv.sweep("paper", v0=v0, zeta=[0, 0.1, 0.3, 2])
     assert_columns_equal_csv(columns, rows)
     assert set(columns["status"]) >= {"separated"}
+
+
+def test_sweep_over_scene_values_equals_the_cli_csv(tmp_path):
+    """ivv.sweep(**axes) is `ivv sweep --set KEY=...`: the same rows, a column per axis."""
+    out = tmp_path / "grid.csv"
+    run = cli("sweep", "--scene", "steel-ball-on-steel-plate", "--law", "hertz", "--v0", "0.5,2",
+              "--set", "structure.thickness=0.001:0.004:4", "--set", "impactor.mass=log:1e-3:1e-1:3",
+              "--out", str(out), "-q")
+    assert run.returncode == 0, run.stderr
+    rows = read_sweep_csv(out)
+    # a log grid's interior points are exp(...) as computed (np.geomspace's middle point here
+    # is 0.01, the CLI's 0.010000000000000004): the masses are read back from the CSV
+    masses = [float(row["impactor.mass"]) for row in rows[:3]]
+    assert masses[0] == 1e-3 and masses[2] == 1e-1
+    columns = ivv.sweep("steel-ball-on-steel-plate", v0=[0.5, 2], law="hertz",
+                        structure_thickness=np.array([0.001, 0.002, 0.003, 0.004]),
+                        impactor_mass=masses)
+    assert_columns_equal_csv(columns, rows,
+                             inputs=("v0", "zeta", "structure.thickness", "impactor.mass"))
+    assert list(columns)[2:4] == ["structure.thickness", "impactor.mass"]
+    with open(tmp_path / "grid.json") as f:
+        units = json.load(f)["columns"]
+    assert units["structure.thickness"] == ivv.scene_values()["structure.thickness"] == "m"
+    assert units["impactor.mass"] == "kg"
+    # ivv.scene()'s short names are the same axes
+    short = ivv.sweep("paper", v0=[1], zeta=[0], mass=[0.1, 0.2], yield_strength=[2e8])
+    long = ivv.sweep("paper", v0=[1], zeta=[0], impactor_mass=[0.1, 0.2],
+                     target_yield_strength=[2e8])
+    np.testing.assert_array_equal(short["e"], long["e"])
+
+
+def test_sweep_axis_errors():
+    with pytest.raises(TypeError, match="unexpected keyword argument 'integrater'"):
+        ivv.sweep("paper", v0=[1], zeta=[0], integrater="dp45")
+    with pytest.raises(ivv.InputError, match="^--set structure.thickness: the scene has no"):
+        ivv.sweep("paper", v0=[1], zeta=[0], structure_thickness=[0.002])
 
 
 def test_sweep_with_the_scenes_own_dashpot_equals_the_cli(tmp_path):
@@ -276,6 +314,9 @@ ERROR_CASES = [
      ["simulate", "--scene", "paper", "--force", "K_h*z^(1.5"]),
     (lambda: ivv.sweep("paper", v0=[1, 2]), ["sweep", "--scene", "paper", "--v0", "1,2",
                                              "--out", "/tmp/ivv-python-test-never.csv"]),
+    (lambda: ivv.sweep("paper", v0=[1], zeta=[0], impactor_mass=[0.5, -1]),
+     ["sweep", "--scene", "paper", "--v0", "1", "--zeta", "0", "--set", "impactor.mass=0.5,-1",
+      "--out", "/tmp/ivv-python-test-never.csv"]),
 ]
 
 
