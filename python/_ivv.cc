@@ -100,77 +100,58 @@ struct PyScene {
   RequestOptions overrides;
 };
 
-// The scalar scene values that have no flag, by their member name in ivv::Scene (scene/scene.h).
-double* scene_value(Scene& s, const std::string& name) {
-  if (name == "mass") return &s.mass;
-  if (name == "radius") return &s.radius;
-  if (name == "impactor_youngs_modulus") return &s.impactor_youngs_modulus;
-  if (name == "impactor_poisson_ratio") return &s.impactor_poisson_ratio;
-  if (name == "target_youngs_modulus") return &s.target_youngs_modulus;
-  if (name == "target_poisson_ratio") return &s.target_poisson_ratio;
-  return nullptr;
+// The keywords of ivv.scene() that are the CLI's overrides (a request applies them again).
+const std::vector<std::string> kFlagOverrides = {"v0", "zeta", "c", "lambda_", "no_dashpot"};
+
+// The scene value a keyword of ivv.scene() (or a scene axis of ivv.sweep()) names: a key of
+// scene/scene_values.h with an underscore for its dot (structure_thickness, target_mass, ...),
+// or one of the short names mass, radius and yield_strength. Empty for any other keyword.
+std::string scene_key(const std::string& keyword) {
+  if (keyword == "mass") return "impactor.mass";
+  if (keyword == "radius") return "impactor.radius";
+  if (keyword == "yield_strength") return "target.yield_strength";
+  const std::size_t underscore = keyword.find('_');
+  if (underscore == std::string::npos) return "";
+  std::string key = keyword;
+  key[underscore] = '.';
+  return find_scene_value(key) ? key : "";
 }
 
-// The keywords of ivv.scene(): the CLI's overrides, then the scene's values.
-const std::vector<std::string> kSceneOverrides = {"v0",
-                                                  "zeta",
-                                                  "c",
-                                                  "lambda_",
-                                                  "no_dashpot",
-                                                  "mass",
-                                                  "radius",
-                                                  "impactor_youngs_modulus",
-                                                  "impactor_poisson_ratio",
-                                                  "target_youngs_modulus",
-                                                  "target_poisson_ratio",
-                                                  "yield_strength",
-                                                  "target_radius",
-                                                  "target_mass",
-                                                  "structure_density",
-                                                  "structure_thickness",
-                                                  "structure_area",
-                                                  "structure_bending_stiffness",
-                                                  "structure_youngs_modulus",
-                                                  "structure_poisson_ratio"};
-
-// structure_<name>: the values of a [structure] section (scene/structure.h), for a scene whose
-// dashpot comes from its structure.
-void override_structure(Scene& scene, const py::dict& kw) {
-  const std::pair<const char*, double Structure::*> required[] = {
-      {"structure_density", &Structure::density},
-      {"structure_thickness", &Structure::thickness},
-      {"structure_area", &Structure::area}};
-  const std::pair<const char*, std::optional<double> Structure::*> optional[] = {
-      {"structure_bending_stiffness", &Structure::bending_stiffness},
-      {"structure_youngs_modulus", &Structure::youngs_modulus},
-      {"structure_poisson_ratio", &Structure::poisson_ratio}};
-  auto check = [&](const char* name) {
-    if (scene.damping.kind != Damping::Kind::structure)
-      throw InputError(name, "the scene has no [structure] section whose value it could replace");
-  };
-  Structure& st = scene.damping.structure;
-  for (const auto& [name, member] : required) {
-    if (!kw.contains(name)) continue;
-    check(name);
-    st.*member = kw[name].cast<double>();
+// Every keyword of ivv.scene(): the CLI's overrides, then the scene's values.
+std::vector<std::string> scene_keywords() {
+  std::vector<std::string> names = kFlagOverrides;
+  for (const char* alias : {"mass", "radius", "yield_strength"}) names.emplace_back(alias);
+  for (const SceneValueInfo& v : scene_values()) {
+    std::string name(v.key);
+    name[name.find('.')] = '_';
+    names.push_back(name);
   }
-  for (const auto& [name, member] : optional) {
-    if (!kw.contains(name)) continue;
-    check(name);
-    st.*member = get<double>(kw, name);  // None: back to the value derived from the target
+  return names;
+}
+
+// The scene values among the keywords, set through scene/scene_values.h (None leaves an optional
+// value out); a message names the keyword as typed.
+void override_scene_values(Scene& scene, const py::dict& kw) {
+  for (const auto& item : kw) {
+    const auto keyword = item.first.cast<std::string>();
+    const std::string key = scene_key(keyword);
+    if (key.empty()) continue;
+    try {
+      if (item.second.is_none())
+        clear_scene_value(scene, key);
+      else
+        set_scene_value(scene, key, item.second.cast<double>());
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      throw InputError(keyword, what.substr(std::min(what.size(), e.field().size() + 2)));
+    }
   }
 }
 
 PyScene load(const std::string& source, const py::dict& kw) {
-  reject_unknown(kw, kSceneOverrides, "scene()");
+  reject_unknown(kw, scene_keywords(), "scene()");
   PyScene s{source, load_scene(source), {}};
-  for (const char* name : {"mass", "radius", "impactor_youngs_modulus", "impactor_poisson_ratio",
-                           "target_youngs_modulus", "target_poisson_ratio"})
-    if (auto v = get<double>(kw, name)) *scene_value(s.scene, name) = *v;
-  if (kw.contains("yield_strength")) s.scene.yield_strength = get<double>(kw, "yield_strength");
-  if (kw.contains("target_radius")) s.scene.target_radius = get<double>(kw, "target_radius");
-  if (kw.contains("target_mass")) s.scene.target_mass = get<double>(kw, "target_mass");
-  override_structure(s.scene, kw);
+  override_scene_values(s.scene, kw);
   RequestOptions& o = s.overrides;
   o.scene = source;
   o.v0 = get<double>(kw, "v0");
@@ -548,6 +529,7 @@ PYBIND11_MODULE(_ivv, m) {
   m.def("_simulate", &simulate, py::arg("scene"), py::arg("options"), py::arg("trajectory"));
   m.def("_sweep", &sweep, py::arg("scene"), py::arg("v0"), py::arg("zeta"), py::arg("threads"),
         py::arg("options"), py::arg("axes"));
+  m.def("_scene_key", &scene_key, py::arg("keyword"));
   m.def("_scene_values", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ivv::SceneValueInfo& v : ivv::scene_values())

@@ -9,6 +9,8 @@ namespace {
 
 using Get = std::optional<double> (*)(const Scene&);
 using Set = void (*)(Scene&, double);
+// Leaves an optional value out (nullptr: a required value).
+using Clear = void (*)(Scene&);
 // Why the scene has no place for the key (nullptr: it has).
 using Unavailable = const char* (*)(const Scene&);
 
@@ -17,6 +19,7 @@ struct Entry {
   Get get;
   Set set;
   Unavailable unavailable;
+  Clear clear = nullptr;
 };
 
 const char* always_available(const Scene&) {
@@ -87,19 +90,23 @@ const std::array<Entry, 24> kEntries = {{
      [](Scene& s, double v) { s.target_poisson_ratio = v; }, always_available},
     {{"target.yield_strength", "Pa", "yield strength S_y"},
      [](const Scene& s) { return s.yield_strength; },
-     [](Scene& s, double v) { s.yield_strength = v; }, always_available},
+     [](Scene& s, double v) { s.yield_strength = v; }, always_available,
+     [](Scene& s) { s.yield_strength.reset(); }},
     {{"target.shear_strength", "Pa", "laminate shear strength S_u (S_y = 2 S_u)"},
      [](const Scene& s) -> std::optional<double> {
        if (!s.yield_strength) return std::nullopt;
        return *s.yield_strength / 2.0;
      },
-     [](Scene& s, double v) { s.yield_strength = 2.0 * v; }, always_available},
+     [](Scene& s, double v) { s.yield_strength = 2.0 * v; }, always_available,
+     [](Scene& s) { s.yield_strength.reset(); }},
     {{"target.radius", "m", "radius R2 of a free target sphere"},
      [](const Scene& s) { return s.target_radius; },
-     [](Scene& s, double v) { s.target_radius = v; }, always_available},
+     [](Scene& s, double v) { s.target_radius = v; }, always_available,
+     [](Scene& s) { s.target_radius.reset(); }},
     {{"target.mass", "kg", "mass m2 of a free target sphere"},
      [](const Scene& s) { return s.target_mass; },
-     [](Scene& s, double v) { s.target_mass = v; }, always_available},
+     [](Scene& s, double v) { s.target_mass = v; }, always_available,
+     [](Scene& s) { s.target_mass.reset(); }},
     {{"structure.density", "kg/m^3", "structure density rho"},
      [](const Scene& s) { return if_structure(s, st(s).density); },
      [](Scene& s, double v) { st(s).density = v; }, needs_structure},
@@ -111,13 +118,16 @@ const std::array<Entry, 24> kEntries = {{
      [](Scene& s, double v) { st(s).area = v; }, needs_bar},
     {{"structure.bending_stiffness", "N m", "plate bending stiffness D*"},
      [](const Scene& s) { return if_structure(s, st(s).bending_stiffness); },
-     [](Scene& s, double v) { st(s).bending_stiffness = v; }, needs_plate},
+     [](Scene& s, double v) { st(s).bending_stiffness = v; }, needs_plate,
+     [](Scene& s) { st(s).bending_stiffness.reset(); }},
     {{"structure.youngs_modulus", "Pa", "structure Young's modulus E"},
      [](const Scene& s) { return if_structure(s, st(s).youngs_modulus); },
-     [](Scene& s, double v) { st(s).youngs_modulus = v; }, needs_structure},
+     [](Scene& s, double v) { st(s).youngs_modulus = v; }, needs_structure,
+     [](Scene& s) { st(s).youngs_modulus.reset(); }},
     {{"structure.poisson_ratio", "-", "plate Poisson's ratio nu"},
      [](const Scene& s) { return if_structure(s, st(s).poisson_ratio); },
-     [](Scene& s, double v) { st(s).poisson_ratio = v; }, needs_plate},
+     [](Scene& s, double v) { st(s).poisson_ratio = v; }, needs_plate,
+     [](Scene& s) { st(s).poisson_ratio.reset(); }},
     {{"structure.length_x", "m", "finite plate length a"},
      [](const Scene& s) { return if_structure(s, st(s).length_x); },
      [](Scene& s, double v) { st(s).length_x = v; }, needs_finite_plate},
@@ -126,10 +136,12 @@ const std::array<Entry, 24> kEntries = {{
      [](Scene& s, double v) { st(s).length_y = v; }, needs_finite_plate},
     {{"structure.impact_x", "m", "impact point x0 on a finite plate"},
      [](const Scene& s) { return if_structure(s, st(s).impact_x); },
-     [](Scene& s, double v) { st(s).impact_x = v; }, needs_finite_plate},
+     [](Scene& s, double v) { st(s).impact_x = v; }, needs_finite_plate,
+     [](Scene& s) { st(s).impact_x.reset(); }},
     {{"structure.impact_y", "m", "impact point y0 on a finite plate"},
      [](const Scene& s) { return if_structure(s, st(s).impact_y); },
-     [](Scene& s, double v) { st(s).impact_y = v; }, needs_finite_plate},
+     [](Scene& s, double v) { st(s).impact_y = v; }, needs_finite_plate,
+     [](Scene& s) { st(s).impact_y.reset(); }},
     {{"structure.D11", "N m", "orthotropic bending stiffness D11"},
      [](const Scene& s) { return if_orthotropic(s, &OrthotropicBending::D11); },
      [](Scene& s, double v) { st(s).bending->D11 = v; }, needs_orthotropic},
@@ -179,6 +191,13 @@ void set_scene_value(Scene& scene, std::string_view key, double value) {
   const Entry& e = entry(key);
   if (const char* why = e.unavailable(scene)) throw InputError(std::string(key), why);
   e.set(scene, value);
+}
+
+void clear_scene_value(Scene& scene, std::string_view key) {
+  const Entry& e = entry(key);
+  if (!e.clear) throw InputError(std::string(key), "required: it cannot be left out");
+  if (const char* why = e.unavailable(scene)) throw InputError(std::string(key), why);
+  e.clear(scene);
 }
 
 std::optional<double> scene_value(const Scene& scene, std::string_view key) {

@@ -38,6 +38,11 @@ const SceneValueInfo* find_scene_value(std::string_view key);
 // plate whose bending stiffnesses the scene does not give.
 void set_scene_value(Scene& scene, std::string_view key, double value);
 
+// Leaves the optional value `key` out of `scene` (a yield strength, a free target's radius or
+// mass, a structure's own D*, E, nu or impact point: the scene file without it). InputError(key)
+// for a required value, an unknown key or one the scene has no place for.
+void clear_scene_value(Scene& scene, std::string_view key);
+
 // The value of `key` in `scene`; nullopt when the scene does not give it (an optional value
 // left out, or a [structure] value without a [structure]). Throws InputError for an unknown key.
 std::optional<double> scene_value(const Scene& scene, std::string_view key);

@@ -110,5 +110,17 @@ TEST(SceneValues, AKeyTheSceneHasNoPlaceForIsRefusedNamingIt) {
   }
 }
 
+TEST(SceneValues, AnOptionalValueCanBeLeftOutARequiredOneCannot) {
+  Scene s = paper_scene();
+  clear_scene_value(s, "target.yield_strength");
+  EXPECT_EQ(s.yield_strength, std::nullopt);
+  EXPECT_THROW(clear_scene_value(s, "impactor.mass"), InputError);
+  Scene plate = finite_orthotropic_plate();
+  plate.damping.structure.youngs_modulus = 70e9;
+  clear_scene_value(plate, "structure.youngs_modulus");
+  EXPECT_EQ(plate.damping.structure.youngs_modulus, std::nullopt);
+  EXPECT_THROW(clear_scene_value(s, "structure.youngs_modulus"), InputError);  // no [structure]
+}
+
 }  // namespace
 }  // namespace ivv

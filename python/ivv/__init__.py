@@ -104,11 +104,15 @@ def scene(name_or_path="paper", **overrides):
       c             dashpot coefficient [N s/m]                   (--c)
       lambda_       Zener's lambda: the dashpot giving it at v0   (--lambda)
       no_dashpot    True: drop the scene's dashpot                (--no-dashpot)
-    and scene values: mass, radius, impactor_youngs_modulus, impactor_poisson_ratio,
-    target_youngs_modulus, target_poisson_ratio, yield_strength, target_radius, target_mass
-    (None removes an optional one); for a scene whose dashpot comes from its [structure]:
+    and every scene value by its key with an underscore for the dot (scene_values() lists
+    them with their units): impactor_mass (or mass), impactor_radius (or radius),
+    impactor_youngs_modulus, impactor_poisson_ratio, target_youngs_modulus,
+    target_poisson_ratio, target_yield_strength (or yield_strength), target_shear_strength,
+    target_radius, target_mass; for a scene whose dashpot comes from its [structure]:
     structure_thickness, structure_density, structure_area, structure_bending_stiffness,
-    structure_youngs_modulus, structure_poisson_ratio.
+    structure_youngs_modulus, structure_poisson_ratio, and a finite plate's structure_length_x,
+    structure_length_y, structure_impact_x, structure_impact_y, structure_D11 ... D66.
+    None leaves an optional value out (a yield strength, a structure's own E, nu or D*).
 
     Returns a Scene whose attributes are the derived parameters (E_star, K_h, z_y, K_y, zeta,
     c, v_yield, ...). Raises InputError naming the field and the accepted range.
@@ -207,11 +211,6 @@ def simulate(scene, law=None, integrator="auto", model="auto", rtol=None,
 _TEXT_COLUMNS = ("route", "integrator", "status", "reason")
 
 
-# The keywords of ivv.scene() that name a scene value without its section.
-_AXIS_ALIASES = {"mass": "impactor.mass", "radius": "impactor.radius",
-                 "yield_strength": "target.yield_strength"}
-
-
 def scene_values():
     """The scene values a sweep can vary, {key: unit}: the keys of `ivv sweep --set KEY=...`
     ("impactor.mass", "structure.thickness", ...), in SI units ("-": dimensionless)."""
@@ -222,15 +221,12 @@ def _axis_key(keyword):
     """A keyword of sweep() as the scene key it varies: structure_thickness ->
     structure.thickness (the section, then the key), and ivv.scene()'s mass, radius,
     yield_strength."""
-    if keyword in _AXIS_ALIASES:
-        return _AXIS_ALIASES[keyword]
-    section, _, key = keyword.partition("_")
-    dotted = f"{section}.{key}"
-    if dotted not in scene_values():
+    key = _ivv._scene_key(keyword)
+    if not key:
         names = ", ".join(k.replace(".", "_", 1) for k in scene_values())
         raise TypeError(f"sweep() got an unexpected keyword argument '{keyword}' (the scene "
                         f"values it can sweep: {names})")
-    return dotted
+    return key
 
 
 def sweep(scene, v0, zeta=None, threads=0, law=None, integrator="auto",

@@ -76,6 +76,20 @@ def test_structure_overrides(tmp_path):
         ivv.scene("paper", structure_thickness=0.004)
 
 
+def test_every_scene_value_is_a_keyword_of_scene():
+    """ivv.scene() sets any scene value by its key (scene/scene_values.h), as sweep() varies it."""
+    plate = ivv.scene("steel-ball-on-finite-steel-plate", structure_length_x=0.3,
+                      target_shear_strength=1e8, impactor_mass=0.01)
+    assert plate.structure["length_x"] == 0.3
+    assert plate.yield_strength == 2e8 and plate.mass == 0.01
+    with pytest.raises(ivv.InputError, match="^mass: required"):
+        ivv.scene("paper", mass=None)
+    with pytest.raises(ivv.InputError, match="^structure_length_x: the scene's plate is infinite"):
+        ivv.scene("steel-ball-on-steel-plate", structure_length_x=0.3)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'structure_lenght_x'"):
+        ivv.scene("steel-ball-on-steel-plate", structure_lenght_x=0.3)
+
+
 def test_scene_repr():
     text = repr(ivv.scene("paper", v0=2, zeta=0.1))
     assert text.startswith("<ivv.Scene 'paper' from 'paper': v0=2.0 m/s, zeta=0.1")
