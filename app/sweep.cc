@@ -200,8 +200,9 @@ std::string help_footer() {
     keys += keys.empty() ? "" : ", ";
     keys += std::string(v.key) + " [" + std::string(v.unit) + "]";
   }
-  return "CSV columns (units; '-' dimensionless or a count): " +
-         sweep_csv_columns_text({SceneAxis{"KEY", {}}}) +
+  std::string columns = sweep_csv_columns_text({SceneAxis{"KEY", {}}});
+  columns.replace(columns.find("KEY"), 3, "KEY of each --set [its unit]");
+  return "CSV columns (units; '-' dimensionless or a count): " + columns +
          "\nRows: row-major over v0, zeta, then each --set axis in order (the last fastest); "
          "LO:HI:N grids hold the decimals typed (0.1:1:10 gives 0.1, 0.2, ..., 1).\n"
          "Scene values for --set: " +
