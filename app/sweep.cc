@@ -118,8 +118,8 @@ int finish_sweep(SweepSink& sink, const SweepFlags& sf, const nlohmann::json& in
   });
   if (sink.output_error() == EPIPE) {  // the reader had what it wanted: not a failure of ivv
     if (!sf.quiet)
-      std::cerr << "ivv sweep: the reader closed standard output after " << sink.done() << " of "
-                << sink.total() << " points; stopped\n";
+      std::cerr << "ivv sweep: the reader closed standard output after " << sink.written() << " of "
+                << sink.total() << " rows; stopped\n";
     return 0;
   }
   if (sink.output_error() != 0) {
@@ -130,8 +130,8 @@ int finish_sweep(SweepSink& sink, const SweepFlags& sf, const nlohmann::json& in
   if (!complete) {
     const int sig = g_sweep_signal.load();
     if (sf.to_stdout()) {
-      std::cerr << "ivv sweep: interrupted: " << sink.done() << " of " << sink.total()
-                << " points written to standard output (a sweep to standard output keeps no "
+      std::cerr << "ivv sweep: interrupted: " << sink.written() << " of " << sink.total()
+                << " rows written to standard output (a sweep to standard output keeps no "
                    "journal: rerun it, or use --out FILE to be able to resume)\n";
       return 128 + (sig ? sig : SIGINT);
     }

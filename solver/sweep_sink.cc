@@ -219,6 +219,11 @@ void SweepSink::count(const std::string& row) {
     ++counts_.failed;
 }
 
+std::size_t SweepSink::written() const {
+  std::lock_guard lock(mutex_);
+  return next_write_;
+}
+
 bool SweepSink::exhausted() const {
   std::lock_guard lock(mutex_);
   return stop_ || cursor_ >= total_;

@@ -72,6 +72,9 @@ class SweepSink {
   // cut short); their points are computed again.
   std::size_t damaged_rows() const { return damaged_; }
   std::size_t done() const;  // resumed + delivered
+  // Rows in the output so far (the partial CSV or the stream): the first unfinished point's
+  // index, every earlier one written in order; at most done().
+  std::size_t written() const;
   // Stop handing out work (a signal arrived). take() returns nothing from then on.
   void request_stop() { stop_ = true; }
   bool stop_requested() const { return stop_; }

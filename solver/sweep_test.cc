@@ -520,6 +520,7 @@ TEST(SweepStream, RowsGoToTheStreamInGridOrderWithoutJournal) {
   run_sweep_points(req, sink, {});
   EXPECT_TRUE(sink.finish({}));
   EXPECT_EQ(sink.output_error(), 0);
+  EXPECT_EQ(sink.written(), sink.total());
   EXPECT_FALSE(fs::exists(sink.journal_path()));
   EXPECT_FALSE(fs::exists(scratch("stream-named.csv")));
   std::rewind(stream);
@@ -548,6 +549,7 @@ TEST(SweepStream, AReaderThatStopsReadingStopsTheSweep) {
     EXPECT_EQ(sink.output_error(), EPIPE);
     EXPECT_FALSE(sink.finish({}));
     EXPECT_LT(sink.done(), sink.total());  // stopped, not run to the end
+    EXPECT_LE(sink.written(), sink.done());
   }
   std::signal(SIGPIPE, previous);
   std::fclose(stream);
