@@ -109,7 +109,11 @@ std::vector<double> linear_grid(double lo, double hi, int n) {
   if (n == 1) return {lo};
   if (auto g = decimal_linear_grid(lo, hi, n)) return *g;
   std::vector<double> g(n);
-  for (int i = 0; i < n; ++i) g[i] = lo + (hi - lo) * i / (n - 1);
+  if (std::isfinite(hi - lo)) {
+    for (int i = 0; i < n; ++i) g[i] = lo + (hi - lo) * i / (n - 1);
+  } else {  // -1.5e308:1.7e308: the span overflows, the weighted ends do not
+    for (int i = 0; i < n; ++i) g[i] = lo / (n - 1) * (n - 1 - i) + hi / (n - 1) * i;
+  }
   g.front() = lo;
   g.back() = hi;
   return g;

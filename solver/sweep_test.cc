@@ -348,6 +348,8 @@ TEST(LinearGrid, StepsWithoutAFiniteDecimalKeepTheFormulaAndExactEnds) {
   EXPECT_EQ(wide.front(), 1e-300);
   EXPECT_EQ(wide[1], 1e-300 + (1.0 - 1e-300) * 1 / 2);
   EXPECT_EQ(wide.back(), 1.0);
+  // a span beyond the largest double: the points stay finite
+  for (double x : linear_grid(-1.5e308, 1.7e308, 4)) EXPECT_TRUE(std::isfinite(x)) << x;
   const std::vector<double> odd = linear_grid(0.05, 20.0, 100);  // step 0.2015...
   EXPECT_EQ(odd.front(), 0.05);
   EXPECT_EQ(odd.back(), 20.0);
