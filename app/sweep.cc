@@ -1,5 +1,6 @@
-// ivv sweep: COR and peak force over a v0 x zeta grid, to CSV with a JSON sidecar and a journal
-// that --resume continues from; across MPI ranks under mpirun.
+// ivv sweep: COR and peak force over a v0 x zeta grid (x the scene values of --set), to CSV with
+// a JSON sidecar and a journal that --resume continues from, or to standard output (--out -);
+// across MPI ranks under mpirun.
 #include <signal.h>
 
 #include <atomic>
