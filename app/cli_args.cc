@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scene/input_error.h"
+#include "scene/scene_values.h"
 #include "solver/sweep.h"
 
 namespace ivv {
@@ -71,13 +72,37 @@ std::vector<double> parse_grid(const std::string& text, const std::string& field
       throw InputError(field,
                        "point count N must be an integer in [1, 1e6] (got " + parts[2] + ")");
     if (hi < lo) throw InputError(field, "HI must not be below LO in '" + text + "'");
-    if (log && !(lo > 0)) throw InputError(field, "a --log grid needs LO > 0");
+    if (log && !(lo > 0)) throw InputError(field, "a logarithmic grid (--log, log:) needs LO > 0");
     return log ? log_grid(lo, hi, static_cast<int>(n)) : linear_grid(lo, hi, static_cast<int>(n));
   }
   std::vector<double> values;
   for (const auto& p : split(text, ',')) values.push_back(parse_number(p, field));
   if (values.empty()) throw InputError(field, "empty list: " + syntax);
   return values;
+}
+
+SetAxisSpec parse_set_axis(const std::string& item) {
+  const auto eq = item.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set", "'" + item +
+                                  "': expected KEY=LO:HI:N, KEY=log:LO:HI:N or KEY=a,b,c, e.g. "
+                                  "structure.thickness=0.001:0.01:10");
+  SetAxisSpec spec;
+  spec.key = item.substr(0, eq);
+  const std::string field = "--set " + spec.key;
+  if (!find_scene_value(spec.key))
+    throw InputError(field, "not a numeric scene value; accepted: " + scene_value_keys() +
+                                " (v0 and zeta are --v0 and --zeta)");
+  spec.range = item.substr(eq + 1);
+  constexpr std::string_view log_prefix = "log:";
+  if (spec.range.starts_with(log_prefix)) {
+    spec.log = true;
+    spec.range.erase(0, log_prefix.size());
+    if (spec.range.find(':') == std::string::npos)
+      throw InputError(field, "'log:' takes a range LO:HI:N, got '" + spec.range + "'");
+  }
+  spec.values = parse_grid(spec.range, field, spec.log);
+  return spec;
 }
 
 std::map<std::string, double, std::less<>> parse_parameters(const std::vector<std::string>& items) {

@@ -20,6 +20,18 @@ long parse_count(const std::string& text, const std::string& field, long lo, lon
 // Throws InputError naming `field` with the accepted syntax.
 std::vector<double> parse_grid(const std::string& text, const std::string& field, bool log);
 
+// One `--set KEY=RANGE` of `ivv sweep`: a scene value (scene/scene_values.h) varied over RANGE,
+// "LO:HI:N" (linear, decimal: solver/sweep_grid.h), "log:LO:HI:N" (logarithmic) or "a,b,c".
+struct SetAxisSpec {
+  std::string key;    // e.g. "structure.thickness"
+  std::string range;  // as typed, without "log:"
+  bool log = false;
+  std::vector<double> values;
+};
+// Throws InputError("--set", ...) for an item without KEY=, InputError("--set KEY", ...) for an
+// unknown key (listing the accepted ones) or a bad range.
+SetAxisSpec parse_set_axis(const std::string& item);
+
 // "NAME=VALUE" items of --param into a map; throws InputError("--param", ...) for a malformed
 // item, a value that is not a finite number, or a name given twice.
 std::map<std::string, double, std::less<>> parse_parameters(const std::vector<std::string>& items);

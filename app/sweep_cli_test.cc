@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -214,9 +215,17 @@ TEST(SweepCli, BadInputLeavesNoFile) {
   struct Case {
     std::string args, flag;
   };
-  for (const Case& c : {Case{"--law hunt-crossley --v0 1,2 --zeta 0,0.1", "--zeta"},
-                        Case{"--v0 1:2:1000000 --zeta 0:1:1000000", "--v0"},
-                        Case{"--v0 1,2 --zeta 0.1 --threads -1", "--threads"}}) {
+  for (const Case& c :
+       {Case{"--law hunt-crossley --v0 1,2 --zeta 0,0.1", "--zeta"},
+        Case{"--v0 1:2:1000000 --zeta 0:1:1000000", "--v0"},
+        Case{"--v0 1,2 --zeta 0.1 --threads -1", "--threads"},
+        Case{"--v0 1 --zeta 0 --set nosuch.key=1:2:3", "--set nosuch.key"},
+        Case{"--v0 1 --zeta 0 --set impactor.mass=-1:1:3", "--set impactor.mass"},
+        Case{"--v0 1 --zeta 0 --set impactor.mass=log:0:1:3", "--set impactor.mass"},
+        Case{"--v0 1 --zeta 0 --set impactor.mass=2:1:3", "--set impactor.mass"},
+        Case{"--v0 1 --zeta 0 --set impactor.mass", "--set"},
+        Case{"--v0 1 --zeta 0 --set structure.thickness=0.001:0.01:3",
+             "--set structure.thickness"}}) {
     const fs::path csv = scratch("bad.csv");
     const fs::path err = scratch("bad.err");
     EXPECT_EQ(
@@ -230,6 +239,100 @@ TEST(SweepCli, BadInputLeavesNoFile) {
       EXPECT_FALSE(fs::exists(csv.string() + suffix)) << c.args << suffix;
     EXPECT_FALSE(fs::exists(scratch("bad.json")));
   }
+}
+
+// The rows of a shell command's standard output (stderr to `err`); `rc` its exit code.
+std::string stdout_of(const std::string& cmd, const fs::path& err, int& rc) {
+  const fs::path out = scratch("stdout.csv");
+  rc = shell(cmd + " >" + out.string(), err);
+  return slurp(out);
+}
+
+// `--out -`: the same bytes as the CSV file, on standard output, and no file of any kind.
+TEST(SweepCli, OutDashStreamsTheCsvToStandardOutput) {
+  const fs::path dir = scratch("stream-dir");
+  fs::create_directories(dir);
+  const std::string grid = " sweep --scene paper --v0 0.1:1:10 --zeta 0,0.1,1 -q --out ";
+  ASSERT_EQ(shell(std::string(IVV_BINARY) + grid + scratch("file.csv").string(), scratch("f.err")),
+            0);
+  int rc = -1;
+  const std::string rows =
+      stdout_of("cd " + dir.string() + " && " + IVV_BINARY + grid + "-", scratch("s.err"), rc);
+  EXPECT_EQ(rc, 0) << slurp(scratch("s.err"));
+  EXPECT_EQ(rows, slurp(scratch("file.csv")));
+  EXPECT_TRUE(fs::is_empty(dir)) << "no journal, partial or sidecar beside a stream";
+  // and the values typed: 0.1:1:10 is 0.1, 0.2, ..., 1 (the naive formula printed
+  // 0.30000000000000004 and 0.99999999999999989)
+  std::istringstream in(rows);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> v0;
+  while (std::getline(in, line))
+    if (v0.empty() || v0.back() != line.substr(0, line.find(',')))
+      v0.push_back(line.substr(0, line.find(',')));
+  EXPECT_EQ(v0, (std::vector<std::string>{"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8",
+                                          "0.9", "1"}));
+  // no journal, so no --resume
+  EXPECT_EQ(shell(std::string(IVV_BINARY) + grid + "- --resume >/dev/null", scratch("r.err")), 2);
+  EXPECT_NE(slurp(scratch("r.err")).find("--resume"), std::string::npos);
+}
+
+// `ivv sweep --out - | head`: the reader stops after three lines; the sweep stops with exit 0,
+// no crash by SIGPIPE and nothing on stderr with -q.
+TEST(SweepCli, OutDashIntoAPipeThatCloses) {
+  const fs::path err = scratch("pipe.err");
+  const fs::path head = scratch("pipe.head");
+  const fs::path rc_file = scratch("pipe.rc");
+  const std::string cmd = "bash -c '" + std::string(IVV_BINARY) + " " + kGrid + " --out - 2>" +
+                          err.string() + " | head -3 >" + head.string() +
+                          "; echo ${PIPESTATUS[0]} >" + rc_file.string() + "'";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(std::stoi(slurp(rc_file)), 0) << slurp(err);
+  EXPECT_EQ(slurp(err), "");
+  EXPECT_EQ(lines(head), 3u);
+  EXPECT_EQ(slurp(head).rfind("v0,zeta,e,", 0), 0u);
+}
+
+// A scene value as an axis: a column named by its key, its unit in the sidecar and in --help.
+TEST(SweepCli, SetSweepsASceneValue) {
+  const fs::path csv = scratch("thickness.csv");
+  ASSERT_EQ(shell(std::string(IVV_BINARY) +
+                      " sweep --scene steel-ball-on-steel-plate --law hertz --v0 1,2 --set "
+                      "structure.thickness=0.001:0.01:10 --set impactor.mass=log:0.001:0.1:3 -q "
+                      "--out " +
+                      csv.string(),
+                  scratch("thickness.err")),
+            0)
+      << slurp(scratch("thickness.err"));
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(rows.rfind("v0,zeta,structure.thickness,impactor.mass,e,", 0), 0u) << rows;
+  EXPECT_EQ(lines(csv), 1u + 2 * 10 * 3);
+  // row-major, the last axis fastest: the 7th row is v0 1, h = 0.003, m = 0.001
+  std::istringstream in(rows);
+  std::string line;
+  for (int i = 0; i < 8; ++i) std::getline(in, line);
+  EXPECT_EQ(line.rfind("1,", 0), 0u) << line;
+  EXPECT_NE(line.find(",0.003,0.001,"), std::string::npos) << line;
+  const auto j = nlohmann::json::parse(slurp(scratch("thickness.json")));
+  EXPECT_EQ(j["columns"]["structure.thickness"], "m");
+  EXPECT_EQ(j["columns"]["impactor.mass"], "kg");
+  EXPECT_EQ(j["columns"]["v0"], "m/s");
+  EXPECT_EQ(j["columns"]["F_max"], "N");
+  EXPECT_EQ(j["grid"]["axes"][0]["key"], "structure.thickness");
+  EXPECT_EQ(j["grid"]["axes"][0]["spec"], "0.001:0.01:10");
+  EXPECT_EQ(j["grid"]["axes"][1]["log"], true);
+  EXPECT_EQ(j["grid"]["points"], 60);
+  // the CSV's every column has its unit in the sidecar
+  std::istringstream header(rows.substr(0, rows.find('\n')));
+  for (std::string name; std::getline(header, name, ',');)
+    EXPECT_TRUE(j["columns"].contains(name)) << name;
+
+  int rc = -1;
+  const std::string help = stdout_of(std::string(IVV_BINARY) + " sweep --help", scratch("h"), rc);
+  EXPECT_EQ(rc, 0);
+  for (const char* unit : {"v0 [m/s]", "F_max [N]", "t_contact [s]", "structure.thickness [m]",
+                           "impactor.mass [kg]", "target.yield_strength [Pa]"})
+    EXPECT_NE(help.find(unit), std::string::npos) << unit;
 }
 
 }  // namespace

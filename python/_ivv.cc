@@ -23,6 +23,7 @@
 #include "reports/impact_json.h"
 #include "scene/data_dir.h"
 #include "scene/input_error.h"
+#include "scene/scene_values.h"
 #include "solver/plate/plate_run.h"
 #include "solver/request_options.h"
 #include "solver/sweep.h"
@@ -100,77 +101,58 @@ struct PyScene {
   RequestOptions overrides;
 };
 
-// The scalar scene values that have no flag, by their member name in ivv::Scene (scene/scene.h).
-double* scene_value(Scene& s, const std::string& name) {
-  if (name == "mass") return &s.mass;
-  if (name == "radius") return &s.radius;
-  if (name == "impactor_youngs_modulus") return &s.impactor_youngs_modulus;
-  if (name == "impactor_poisson_ratio") return &s.impactor_poisson_ratio;
-  if (name == "target_youngs_modulus") return &s.target_youngs_modulus;
-  if (name == "target_poisson_ratio") return &s.target_poisson_ratio;
-  return nullptr;
+// The keywords of ivv.scene() that are the CLI's overrides (a request applies them again).
+const std::vector<std::string> kFlagOverrides = {"v0", "zeta", "c", "lambda_", "no_dashpot"};
+
+// The scene value a keyword of ivv.scene() (or a scene axis of ivv.sweep()) names: a key of
+// scene/scene_values.h with an underscore for its dot (structure_thickness, target_mass, ...),
+// or one of the short names mass, radius and yield_strength. Empty for any other keyword.
+std::string scene_key(const std::string& keyword) {
+  if (keyword == "mass") return "impactor.mass";
+  if (keyword == "radius") return "impactor.radius";
+  if (keyword == "yield_strength") return "target.yield_strength";
+  const std::size_t underscore = keyword.find('_');
+  if (underscore == std::string::npos) return "";
+  std::string key = keyword;
+  key[underscore] = '.';
+  return find_scene_value(key) ? key : "";
 }
 
-// The keywords of ivv.scene(): the CLI's overrides, then the scene's values.
-const std::vector<std::string> kSceneOverrides = {"v0",
-                                                  "zeta",
-                                                  "c",
-                                                  "lambda_",
-                                                  "no_dashpot",
-                                                  "mass",
-                                                  "radius",
-                                                  "impactor_youngs_modulus",
-                                                  "impactor_poisson_ratio",
-                                                  "target_youngs_modulus",
-                                                  "target_poisson_ratio",
-                                                  "yield_strength",
-                                                  "target_radius",
-                                                  "target_mass",
-                                                  "structure_density",
-                                                  "structure_thickness",
-                                                  "structure_area",
-                                                  "structure_bending_stiffness",
-                                                  "structure_youngs_modulus",
-                                                  "structure_poisson_ratio"};
-
-// structure_<name>: the values of a [structure] section (scene/structure.h), for a scene whose
-// dashpot comes from its structure.
-void override_structure(Scene& scene, const py::dict& kw) {
-  const std::pair<const char*, double Structure::*> required[] = {
-      {"structure_density", &Structure::density},
-      {"structure_thickness", &Structure::thickness},
-      {"structure_area", &Structure::area}};
-  const std::pair<const char*, std::optional<double> Structure::*> optional[] = {
-      {"structure_bending_stiffness", &Structure::bending_stiffness},
-      {"structure_youngs_modulus", &Structure::youngs_modulus},
-      {"structure_poisson_ratio", &Structure::poisson_ratio}};
-  auto check = [&](const char* name) {
-    if (scene.damping.kind != Damping::Kind::structure)
-      throw InputError(name, "the scene has no [structure] section whose value it could replace");
-  };
-  Structure& st = scene.damping.structure;
-  for (const auto& [name, member] : required) {
-    if (!kw.contains(name)) continue;
-    check(name);
-    st.*member = kw[name].cast<double>();
+// Every keyword of ivv.scene(): the CLI's overrides, then the scene's values.
+std::vector<std::string> scene_keywords() {
+  std::vector<std::string> names = kFlagOverrides;
+  for (const char* alias : {"mass", "radius", "yield_strength"}) names.emplace_back(alias);
+  for (const SceneValueInfo& v : scene_values()) {
+    std::string name(v.key);
+    name[name.find('.')] = '_';
+    names.push_back(name);
   }
-  for (const auto& [name, member] : optional) {
-    if (!kw.contains(name)) continue;
-    check(name);
-    st.*member = get<double>(kw, name);  // None: back to the value derived from the target
+  return names;
+}
+
+// The scene values among the keywords, set through scene/scene_values.h (None leaves an optional
+// value out); a message names the keyword as typed.
+void override_scene_values(Scene& scene, const py::dict& kw) {
+  for (const auto& item : kw) {
+    const auto keyword = item.first.cast<std::string>();
+    const std::string key = scene_key(keyword);
+    if (key.empty()) continue;
+    try {
+      if (item.second.is_none())
+        clear_scene_value(scene, key);
+      else
+        set_scene_value(scene, key, item.second.cast<double>());
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      throw InputError(keyword, what.substr(std::min(what.size(), e.field().size() + 2)));
+    }
   }
 }
 
 PyScene load(const std::string& source, const py::dict& kw) {
-  reject_unknown(kw, kSceneOverrides, "scene()");
+  reject_unknown(kw, scene_keywords(), "scene()");
   PyScene s{source, load_scene(source), {}};
-  for (const char* name : {"mass", "radius", "impactor_youngs_modulus", "impactor_poisson_ratio",
-                           "target_youngs_modulus", "target_poisson_ratio"})
-    if (auto v = get<double>(kw, name)) *scene_value(s.scene, name) = *v;
-  if (kw.contains("yield_strength")) s.scene.yield_strength = get<double>(kw, "yield_strength");
-  if (kw.contains("target_radius")) s.scene.target_radius = get<double>(kw, "target_radius");
-  if (kw.contains("target_mass")) s.scene.target_mass = get<double>(kw, "target_mass");
-  override_structure(s.scene, kw);
+  override_scene_values(s.scene, kw);
   RequestOptions& o = s.overrides;
   o.scene = source;
   o.v0 = get<double>(kw, "v0");
@@ -311,12 +293,13 @@ py::array_t<double> numbers(const std::vector<double>& v) {
 
 // The columns of the sweep CSV (solver/sweep.h, sweep_csv_header()) from the results the CSV
 // is written from: a failed point has NaN where the CSV leaves its result columns empty.
-py::dict sweep_columns(const std::vector<SweepPoint>& points) {
+py::dict sweep_columns(const SweepRequest& req, const std::vector<SweepPoint>& points) {
   static const char* const result_names[] = {
       "e",         "e_poisson", "e_energetic", "F_max",  "t_F_max",
       "t_contact", "z_max",     "alpha_max",   "z_perm", "energy_residual"};
   const std::size_t n = points.size();
   std::vector<double> v0(n), zeta(n);
+  std::vector<std::vector<double>> axes(req.axes.size(), std::vector<double>(n));
   std::vector<std::vector<double>> results(std::size(result_names), std::vector<double>(n));
   py::array_t<long long> steps(static_cast<py::ssize_t>(n));
   auto steps_out = steps.mutable_unchecked<1>();
@@ -325,6 +308,7 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
     const ImpactResult& r = points[i].result;
     v0[i] = points[i].v0;
     zeta[i] = points[i].zeta;
+    for (std::size_t k = 0; k < axes.size(); ++k) axes[k][i] = points[i].axes[k];
     const double values[] = {r.e,         r.e_poisson, r.e_energetic, r.F_max,  r.t_F_max,
                              r.t_contact, r.z_max,     r.alpha_max,   r.z_perm, r.energy.residual};
     for (std::size_t k = 0; k < std::size(result_names); ++k)
@@ -338,6 +322,7 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
   py::dict out;
   out["v0"] = numbers(v0);
   out["zeta"] = numbers(zeta);
+  for (std::size_t k = 0; k < axes.size(); ++k) out[py::str(req.axes[k].key)] = numbers(axes[k]);
   for (std::size_t k = 0; k < std::size(result_names); ++k)
     out[result_names[k]] = numbers(results[k]);
   out["steps"] = steps;
@@ -348,9 +333,11 @@ py::dict sweep_columns(const std::vector<SweepPoint>& points) {
   return out;
 }
 
-// `ivv sweep` over v0 x zeta (zeta None: every point keeps the scene's own dashpot).
+// `ivv sweep` over v0 x zeta (zeta None: every point keeps the scene's own dashpot) x the scene
+// axes, each (key, values) as `--set KEY=...` (scene/scene_values.h).
 py::dict sweep(const PyScene& s, const std::vector<double>& v0,
-               const std::optional<std::vector<double>>& zeta, int threads, const py::dict& kw) {
+               const std::optional<std::vector<double>>& zeta, int threads, const py::dict& kw,
+               const std::vector<std::pair<std::string, std::vector<double>>>& axes) {
   SweepRequest req;
   req.base = to_request(s.scene, request_options(s, kw, "sweep()"));
   req.velocities = v0;
@@ -362,9 +349,11 @@ py::dict sweep(const PyScene& s, const std::vector<double>& v0,
     throw InputError("--zeta",
                      "required: the scene has no dashpot of its own (LO:HI:N or a,b,c; 0 = no "
                      "dashpot)");
+  for (const auto& [key, values] : axes) req.axes.push_back({key, values});
   req.threads = threads;
   validate(req);
-  return sweep_columns(run_interruptible(req));
+  const std::vector<SweepPoint> points = run_interruptible(req);
+  return sweep_columns(req, points);
 }
 
 // ---- check-law -----------------------------------------------------------------------------
@@ -555,7 +544,14 @@ PYBIND11_MODULE(_ivv, m) {
   m.def("_load_scene", &load, py::arg("source"), py::arg("overrides"));
   m.def("_simulate", &simulate, py::arg("scene"), py::arg("options"), py::arg("trajectory"));
   m.def("_sweep", &sweep, py::arg("scene"), py::arg("v0"), py::arg("zeta"), py::arg("threads"),
-        py::arg("options"));
+        py::arg("options"), py::arg("axes"));
+  m.def("_scene_key", &scene_key, py::arg("keyword"));
+  m.def("_scene_values", [] {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const ivv::SceneValueInfo& v : ivv::scene_values())
+      out.emplace_back(std::string(v.key), std::string(v.unit));
+    return out;
+  });
   m.def("_check_law", &check_law, py::arg("scene"), py::arg("options"), py::arg("checks"));
   m.def("_calibrate", &calibrate, py::arg("scene"), py::arg("options"), py::arg("fit"));
   m.def("_predict", &predict, py::arg("options"));

@@ -1,209 +1,36 @@
-// A grid of impacts (v0 x zeta). Each point is an independent simulate(); points are numbered
-// velocity-major (index = iv * zetas.size() + iz) and results always come back in that order,
-// whatever the thread count, the number of MPI ranks or the interruptions.
+// A grid of impacts: v0 x zeta x any scene values. Each point is an independent simulate();
+// the grid, its order and its validation are solver/sweep_grid.h, the CSV rows
+// solver/sweep_csv.h, the streamed and journalled output solver/sweep_sink.h.
 //
 // Two ways to run a grid:
-// - run_sweep(): in memory, for studies that want the ImpactResults (reports, cases).
-// - SweepSink + run_sweep_to_csv(): streamed to a CSV for large studies. Rows are written in
-//   index order as they complete (a bounded reorder window, so memory does not grow with the
-//   grid); every finished point is also appended to a journal beside the output, so a sweep
-//   stopped at any moment (SIGKILL included) resumes without recomputing what it finished, and
-//   the final CSV is byte-identical to an uninterrupted run. The CSV appears whole or not at
-//   all (write_file_atomically).
+// - run_sweep(): in memory, for studies that want the ImpactResults (reports, cases, Python).
+// - SweepSink + run_sweep_points() (sweep_sink.h): streamed to a CSV for large studies, with a
+//   journal that --resume continues from, or to standard output.
 #pragma once
 
-#include <atomic>
-#include <condition_variable>
-#include <cstdint>
-#include <cstdio>
-#include <filesystem>
-#include <functional>
-#include <istream>
-#include <map>
-#include <mutex>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "solver/simulate.h"
+#include "solver/sweep_csv.h"
+#include "solver/sweep_grid.h"
+#include "solver/sweep_sink.h"
 
 namespace ivv {
-
-class StagedFile;  // solver/atomic_file.h
-
-struct SweepRequest {
-  SimulationRequest base;          // scene, law, integrator and options shared by every point
-  std::vector<double> velocities;  // v0 [m/s]
-  std::vector<double> zetas;       // damping ratios; 0 means no dashpot
-  // Every point keeps the base scene's own dashpot (a [structure], lambda or c) instead of a
-  // zeta of the grid: `zetas` must then be empty, the grid is velocities x 1, and the zeta
-  // column of a row is the point's derived zeta (nan without a yield strength).
-  bool scene_dashpot = false;
-  int threads = 0;  // 0: all hardware threads
-  // run_sweep only: called from worker threads (serialised) after each point: (done, total).
-  std::function<void(std::size_t, std::size_t)> progress;
-  // run_sweep only: once true, no new point is started and run_sweep returns after the points
-  // in flight; the points never started keep a default ImpactResult (the caller asked to stop
-  // and knows it: the Python module's Ctrl-C).
-  const std::atomic<bool>* stop = nullptr;
-};
-
-// The largest grid accepted: 1e8 points (a CSV of ~25 GB). Checked before anything is
-// allocated, so a mistyped grid is bad input, not std::bad_alloc.
-inline constexpr double kMaxSweepPoints = 1e8;
-
-// The one validation of a sweep, called by every entry point before any work: the grid is
-// non-empty, of at most kMaxSweepPoints points, v0 finite > 0, zeta finite >= 0, and every
-// point is a valid SimulationRequest (validate() of the base with that v0 and zeta). A law
-// that carries its own rate dependence (hunt-crossley) with a series dashpot (zeta > 0) is
-// rejected naming --zeta, as `ivv simulate` rejects it. Throws InputError.
-void validate(const SweepRequest& request);
-
-std::size_t point_count(const SweepRequest& request);
-// The simulation request of point `index` (velocity-major numbering).
-SimulationRequest point_request(const SweepRequest& request, std::size_t index);
 
 struct SweepPoint {
   double v0 = 0.0;
   double zeta = 0.0;
+  std::vector<double> axes;  // the scene axes' values (SweepRequest::axes order)
   ImpactResult result;
 };
 
 // Validates, then runs every point on request.threads workers. A point whose simulate()
-// throws ends the sweep with std::runtime_error naming the point (v0, zeta).
+// throws ends the sweep with std::runtime_error naming the point (v0, zeta, the axes).
 std::vector<SweepPoint> run_sweep(const SweepRequest& request);
 
-// ---- CSV rows ----------------------------------------------------------------------------
-// Columns: v0,zeta,e,e_poisson,e_energetic,F_max,t_F_max,t_contact,z_max,alpha_max,z_perm,
-// energy_residual,steps,route,integrator,status,reason. v0 and zeta carry 17 significant digits
-// (a row can be re-run exactly with `ivv simulate --v0 V --zeta Z`), results 12. route and
-// integrator say what produced the row (ImpactResult::route, ::integrator): with --model auto
-// and --integrator auto they differ from point to point. A failed row leaves every result
-// column empty (never a plausible 0), keeps steps and gives the reason (quoted, RFC 4180).
-std::string sweep_csv_header();
-std::string sweep_csv_row(double v0, double zeta, const ImpactResult& result);
-// The same row appended to `row` (no allocation once its capacity suffices; numbers by
-// std::to_chars, solver/format.h: the bytes of printf's %.17g and %.12g).
-void append_sweep_csv_row(std::string& row, double v0, double zeta, const ImpactResult& result);
-// Runs point `index` and returns its row. A throwing simulate() becomes std::runtime_error
+// Runs point `index` and returns its CSV row. A throwing simulate() becomes std::runtime_error
 // naming the point.
 std::string run_sweep_point(const SweepRequest& request, std::size_t index);
-
-// ---- streamed, journalled output ---------------------------------------------------------
-struct SweepCounts {
-  std::size_t separated = 0, captured = 0, failed = 0;
-  // rows per route and per integrator (the CSV's columns): what --model auto and
-  // --integrator auto chose over the grid
-  std::map<std::string, std::size_t> routes, integrators;
-};
-
-struct SweepOutputOptions {
-  std::filesystem::path csv;  // the CSV; beside it CSV.journal and CSV.partial while running
-  bool resume = false;        // continue from the journal of an interrupted run
-  // Identifies the sweep in the journal (e.g. the sidecar's description of every input): a
-  // journal written under another description is refused on --resume.
-  std::string description;
-  // Rows may complete at most this far ahead of the first unfinished one (memory bound).
-  std::size_t window = 1 << 16;
-  // The JSON sidecar committed with the CSV by finish_with_sidecar(); empty: none.
-  std::filesystem::path sidecar = {};
-};
-
-// Journal, reorder window and partial CSV of one sweep. Thread-safe: any number of threads
-// take() work and deliver() rows.
-class SweepSink {
- public:
-  // Validates the request, then opens (or, with resume, reopens) the journal and rebuilds the
-  // partial CSV from the journal's checksummed rows. Throws InputError naming the flag: a bad grid,
-  // --out, or --resume (an existing journal without --resume, a journal of another sweep).
-  SweepSink(const SweepRequest& request, SweepOutputOptions options);
-  ~SweepSink();
-  SweepSink(const SweepSink&) = delete;
-  SweepSink& operator=(const SweepSink&) = delete;
-
-  std::size_t total() const { return total_; }
-  std::size_t resumed() const { return resumed_; }  // points read back from a previous run
-  // Journal lines not trusted on --resume (checksum, index or inputs do not match: edited or
-  // cut short); their points are computed again.
-  std::size_t damaged_rows() const { return damaged_; }
-  std::size_t done() const;  // resumed + delivered
-  // Stop handing out work (a signal arrived). take() returns nothing from then on.
-  void request_stop() { stop_ = true; }
-  bool stop_requested() const { return stop_; }
-
-  // Up to `max` indices not yet done, in increasing order. With `block`, waits while the next
-  // index is more than `window` ahead of the first unfinished one; without, returns nothing in
-  // that case. Empty and exhausted(): no work left to hand out (finished or stopping).
-  std::vector<std::size_t> take(std::size_t max, bool block);
-  bool exhausted() const;
-
-  // Records a finished point: appended to the journal (flushed), then written to the partial
-  // CSV once every earlier point is written.
-  void deliver(std::size_t index, const std::string& row);
-  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal.
-  void deliver(const std::vector<std::pair<std::size_t, std::string>>& rows);
-
-  // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
-  // journal and partial removed; returns true. Otherwise leaves journal and partial for
-  // --resume and returns false.
-  bool finish(const std::function<void(const SweepCounts&)>& before_commit);
-  // finish(), committing the CSV and the sidecar (options.sidecar, filled by `write_sidecar`)
-  // as a pair (a SIGKILL between them once left a sidecar beside a CSV it did not describe): both
-  // are written to temporaries first, then the old sidecar is removed, the CSV renamed into place
-  // and the sidecar last, so a reader (or a SIGKILL at any moment) never pairs a sidecar with a CSV
-  // it does not describe: at worst a CSV has no sidecar yet.
-  bool finish_with_sidecar(
-      const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar);
-  const SweepCounts& counts() const { return counts_; }
-  std::filesystem::path journal_path() const;
-
- private:
-  // finish() and finish_with_sidecar(): while points are missing, flushes journal and partial
-  // for --resume and returns false; otherwise stages the CSV (a copy of the partial), calls
-  // `between`, which commits it (and a sidecar around it), then removes journal and partial.
-  bool commit_csv(const std::function<void(StagedFile& csv)>& between);
-  void write_ready();                                      // caller holds mutex_
-  void record(std::size_t index, const std::string& row);  // caller holds mutex_
-  void count(const std::string& row);
-  // Reads the journal's rows after its header into pending_ (and the partial CSV); returns the
-  // bytes of its whole lines.
-  std::uintmax_t read_journal_rows(std::istream& in, const SweepRequest& request);
-
-  SweepOutputOptions options_;
-  std::size_t total_ = 0;
-  std::size_t resumed_ = 0;
-  std::size_t damaged_ = 0;
-  std::atomic<bool> stop_{false};
-  mutable std::mutex mutex_;
-  std::condition_variable written_cv_;
-  std::size_t cursor_ = 0;      // next index to hand out
-  std::size_t next_write_ = 0;  // first index not yet in the partial CSV
-  std::size_t delivered_ = 0;
-  std::map<std::size_t, std::string> pending_;  // finished, waiting for earlier points
-  SweepCounts counts_;
-  std::FILE* journal_ = nullptr;
-  std::FILE* partial_ = nullptr;
-  std::vector<char> journal_buffer_, partial_buffer_;  // their stdio buffers (setvbuf)
-};
-
-struct SweepRunOptions {
-  const std::atomic<bool>* stop = nullptr;  // set by a signal handler: stop handing out work
-  // Called once for every point delivered (a batch at a time), serialised.
-  std::function<void(std::size_t done, std::size_t total)> progress;
-  // Points a worker takes at a time and delivers together (one lock and one journal flush):
-  // 32 points are about 0.4 ms of the paper scene's work; a SIGKILL loses at most a batch a
-  // worker, computed again on --resume.
-  std::size_t batch = 32;
-};
-
-// Runs every point not yet done on request.threads workers (parallel_for, one worker an index),
-// each taking `batch` points at a time from `sink` and delivering their rows together.
-// Returns when all points are done or a stop was requested (then the points in flight are
-// finished and delivered). A throwing point ends the sweep with std::runtime_error naming it.
-void run_sweep_points(const SweepRequest& request, SweepSink& sink, const SweepRunOptions& options);
-
-// Grids: n points from lo to hi inclusive, linearly or logarithmically spaced.
-std::vector<double> linear_grid(double lo, double hi, int n);
-std::vector<double> log_grid(double lo, double hi, int n);
 
 }  // namespace ivv

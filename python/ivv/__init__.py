@@ -11,7 +11,7 @@ The functions mirror the command line and return what its libraries compute:
 
 scene()      a shipped scene or a TOML file, with overrides; derived parameters as attributes
 simulate()   one impact: the fields of `ivv simulate --json` (and the trajectory as numpy arrays)
-sweep()      a v0 x zeta grid in parallel: numpy columns, those of `ivv sweep`'s CSV
+sweep()      a v0 x zeta (x scene values) grid in parallel: numpy columns, those of `ivv sweep`'s CSV
 check_law()  a contact law through the conformance checks: `ivv check-law --json`
 calibrate()  a law's parameters fitted to measured restitution: `ivv calibrate --json`
 predict()    e with its 95 % band, or the V&V 20 comparison: `ivv predict --json`
@@ -32,7 +32,8 @@ from ._ivv import InputError
 __version__ = _ivv.__version__
 
 __all__ = ["InputError", "Scene", "SimulationResult", "LawVerdict", "Calibration", "Prediction",
-           "scene", "simulate", "sweep", "check_law", "calibrate", "predict", "data_directories"]
+           "scene", "simulate", "sweep", "check_law", "calibrate", "predict", "data_directories",
+           "scene_values"]
 
 
 def _register_data_directories():
@@ -103,11 +104,15 @@ def scene(name_or_path="paper", **overrides):
       c             dashpot coefficient [N s/m]                   (--c)
       lambda_       Zener's lambda: the dashpot giving it at v0   (--lambda)
       no_dashpot    True: drop the scene's dashpot                (--no-dashpot)
-    and scene values: mass, radius, impactor_youngs_modulus, impactor_poisson_ratio,
-    target_youngs_modulus, target_poisson_ratio, yield_strength, target_radius, target_mass
-    (None removes an optional one); for a scene whose dashpot comes from its [structure]:
+    and every scene value by its key with an underscore for the dot (scene_values() lists
+    them with their units): impactor_mass (or mass), impactor_radius (or radius),
+    impactor_youngs_modulus, impactor_poisson_ratio, target_youngs_modulus,
+    target_poisson_ratio, target_yield_strength (or yield_strength), target_shear_strength,
+    target_radius, target_mass; for a scene whose dashpot comes from its [structure]:
     structure_thickness, structure_density, structure_area, structure_bending_stiffness,
-    structure_youngs_modulus, structure_poisson_ratio.
+    structure_youngs_modulus, structure_poisson_ratio, and a finite plate's structure_length_x,
+    structure_length_y, structure_impact_x, structure_impact_y, structure_D11 ... D66.
+    None leaves an optional value out (a yield strength, a structure's own E, nu or D*).
 
     Returns a Scene whose attributes are the derived parameters (E_star, K_h, z_y, K_y, zeta,
     c, v_yield, ...). Raises InputError naming the field and the accepted range.
@@ -216,30 +221,56 @@ def simulate(scene, law=None, integrator="auto", model="auto", rtol=None,
 _TEXT_COLUMNS = ("route", "integrator", "status", "reason")
 
 
+def scene_values():
+    """The scene values a sweep can vary, {key: unit}: the keys of `ivv sweep --set KEY=...`
+    ("impactor.mass", "structure.thickness", ...), in SI units ("-": dimensionless)."""
+    return dict(_ivv._scene_values())
+
+
+def _axis_key(keyword):
+    """A keyword of sweep() as the scene key it varies: structure_thickness ->
+    structure.thickness (the section, then the key), and ivv.scene()'s mass, radius,
+    yield_strength."""
+    key = _ivv._scene_key(keyword)
+    if not key:
+        names = ", ".join(k.replace(".", "_", 1) for k in scene_values())
+        raise TypeError(f"sweep() got an unexpected keyword argument '{keyword}' (the scene "
+                        f"values it can sweep: {names})")
+    return key
+
+
 def sweep(scene, v0, zeta=None, threads=0, law=None, integrator="auto",
           model="auto", rtol=None, *, atol=None, dt=None, max_steps=None, params=None,
-          force=None, unload=None, allow_tension=False, hc_k=None, hc_mu=None):
-    """COR and peak force over a v0 x zeta grid, computed in parallel (`ivv sweep`).
+          force=None, unload=None, allow_tension=False, hc_k=None, hc_mu=None, **axes):
+    """COR and peak force over a v0 x zeta grid (x any scene values), computed in parallel
+    (`ivv sweep`).
 
     v0       impact velocities [m/s], array_like
     zeta     damping ratios, array_like (0: no dashpot); None: every point keeps the scene's
              own dashpot (its c, lambda or [structure]) and the zeta column is its derived zeta
     threads  worker threads (0: all cores)
+    **axes   scene values swept too, as `ivv sweep --set KEY=...`: the key with its section
+             and an underscore for the dot (structure_thickness=np.linspace(1e-3, 1e-2, 10),
+             impactor_mass=[0.1, 0.5], target_yield_strength=...; also ivv.scene()'s mass,
+             radius, yield_strength), each array_like in the key's unit (scene_values())
     and the law, integrator and tolerances as simulate() takes them.
 
-    Returns a dict of numpy arrays, one per column of the sweep CSV, in grid order (velocity
-    major: point i has v0[i // len(zeta)], zeta[i % len(zeta)]): v0, zeta, e, e_poisson,
-    e_energetic, F_max, t_F_max, t_contact, z_max, alpha_max, z_perm, energy_residual (float;
-    nan for a failed point, where the CSV is empty), steps (int), route, integrator, status,
-    reason (str). The C++ work runs with the GIL released; Ctrl-C stops it (KeyboardInterrupt)
-    after the points in flight.
+    Returns a dict of numpy arrays, one per column of the sweep CSV, in grid order (row-major
+    over v0, zeta, then the axes in the order given, the last fastest; without axes point i has
+    v0[i // len(zeta)], zeta[i % len(zeta)]): v0, zeta, one column per axis named by its key
+    ("structure.thickness"), e, e_poisson, e_energetic, F_max, t_F_max, t_contact, z_max,
+    alpha_max, z_perm, energy_residual (float; nan for a failed point, where the CSV is empty),
+    steps (int), route, integrator, status, reason (str). The C++ work runs with the GIL
+    released; Ctrl-C stops it (KeyboardInterrupt) after the points in flight.
     """
     s = _as_scene(scene)
     v = _np.atleast_1d(_np.asarray(v0, dtype=float)).ravel()
     z = None if zeta is None else _np.atleast_1d(_np.asarray(zeta, dtype=float)).ravel()
     opts = _model_options(law, integrator, model, rtol, atol,
                           dt, max_steps, params, force, unload, allow_tension, hc_k, hc_mu)
-    columns = _ivv._sweep(s._scene, v, z, int(threads), opts)
+    scene_axes = [(_axis_key(name), _np.atleast_1d(_np.asarray(values, dtype=float)).ravel())
+                  for name, values in axes.items()]
+    columns = _ivv._sweep(s._scene, v, z, int(threads), opts, scene_axes)
     for name in _TEXT_COLUMNS:
         columns[name] = _np.array(columns[name], dtype=str)
     return columns

@@ -76,6 +76,20 @@ def test_structure_overrides(tmp_path):
         ivv.scene("paper", structure_thickness=0.004)
 
 
+def test_every_scene_value_is_a_keyword_of_scene():
+    """ivv.scene() sets any scene value by its key (scene/scene_values.h), as sweep() varies it."""
+    plate = ivv.scene("steel-ball-on-finite-steel-plate", structure_length_x=0.3,
+                      target_shear_strength=1e8, impactor_mass=0.01)
+    assert plate.structure["length_x"] == 0.3
+    assert plate.yield_strength == 2e8 and plate.mass == 0.01
+    with pytest.raises(ivv.InputError, match="^mass: required"):
+        ivv.scene("paper", mass=None)
+    with pytest.raises(ivv.InputError, match="^structure_length_x: the scene's plate is infinite"):
+        ivv.scene("steel-ball-on-steel-plate", structure_length_x=0.3)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'structure_lenght_x'"):
+        ivv.scene("steel-ball-on-steel-plate", structure_lenght_x=0.3)
+
+
 def test_scene_repr():
     text = repr(ivv.scene("paper", v0=2, zeta=0.1))
     assert text.startswith("<ivv.Scene 'paper' from 'paper': v0=2.0 m/s, zeta=0.1")
@@ -197,14 +211,16 @@ def read_sweep_csv(path):
         return list(csv.DictReader(f))
 
 
-def assert_columns_equal_csv(columns, rows):
+def assert_columns_equal_csv(columns, rows, inputs=("v0", "zeta")):
     assert list(columns) == list(rows[0]), "the columns of the CSV, in its order"
     for name, column in columns.items():
         assert len(column) == len(rows)
         for x, row in zip(column, rows):
             text = row[name]
-            if name in ("v0", "zeta"):
-                assert f"{x:.17g}" == text, name
+            if name in inputs:
+                # shortest round-trip form: the same double, in no more digits than repr's
+                assert float(text) == x or (math.isnan(x) and text == "nan"), name
+                assert len(text.replace("e+", "e")) <= len(repr(x)), (name, text, repr(x))
             elif name == "steps":
                 assert int(x) == int(text)
             elif column.dtype.kind == "f":
@@ -223,6 +239,42 @@ def test_sweep_equals_the_cli_csv(tmp_path):
     columns = ivv.sweep("paper", v0=v0, zeta=[0, 0.1, 0.3, 2])
     assert_columns_equal_csv(columns, rows)
     assert set(columns["status"]) >= {"separated"}
+
+
+def test_sweep_over_scene_values_equals_the_cli_csv(tmp_path):
+    """ivv.sweep(**axes) is `ivv sweep --set KEY=...`: the same rows, a column per axis."""
+    out = tmp_path / "grid.csv"
+    run = cli("sweep", "--scene", "steel-ball-on-steel-plate", "--law", "hertz", "--v0", "0.5,2",
+              "--set", "structure.thickness=0.001:0.004:4", "--set", "impactor.mass=log:1e-3:1e-1:3",
+              "--out", str(out), "-q")
+    assert run.returncode == 0, run.stderr
+    rows = read_sweep_csv(out)
+    # a log grid's interior points are exp(...) as computed (np.geomspace's middle point here
+    # is 0.01, the CLI's 0.010000000000000004): the masses are read back from the CSV
+    masses = [float(row["impactor.mass"]) for row in rows[:3]]
+    assert masses[0] == 1e-3 and masses[2] == 1e-1
+    columns = ivv.sweep("steel-ball-on-steel-plate", v0=[0.5, 2], law="hertz",
+                        structure_thickness=np.array([0.001, 0.002, 0.003, 0.004]),
+                        impactor_mass=masses)
+    assert_columns_equal_csv(columns, rows,
+                             inputs=("v0", "zeta", "structure.thickness", "impactor.mass"))
+    assert list(columns)[2:4] == ["structure.thickness", "impactor.mass"]
+    with open(tmp_path / "grid.json") as f:
+        units = json.load(f)["columns"]
+    assert units["structure.thickness"] == ivv.scene_values()["structure.thickness"] == "m"
+    assert units["impactor.mass"] == "kg"
+    # ivv.scene()'s short names are the same axes
+    short = ivv.sweep("paper", v0=[1], zeta=[0], mass=[0.1, 0.2], yield_strength=[2e8])
+    long = ivv.sweep("paper", v0=[1], zeta=[0], impactor_mass=[0.1, 0.2],
+                     target_yield_strength=[2e8])
+    np.testing.assert_array_equal(short["e"], long["e"])
+
+
+def test_sweep_axis_errors():
+    with pytest.raises(TypeError, match="unexpected keyword argument 'integrater'"):
+        ivv.sweep("paper", v0=[1], zeta=[0], integrater="dp45")
+    with pytest.raises(ivv.InputError, match="^--set structure.thickness: the scene has no"):
+        ivv.sweep("paper", v0=[1], zeta=[0], structure_thickness=[0.002])
 
 
 def test_sweep_with_the_scenes_own_dashpot_equals_the_cli(tmp_path):
@@ -287,6 +339,9 @@ ERROR_CASES = [
      ["simulate", "--scene", "paper", "--force", "K_h*z^(1.5"]),
     (lambda: ivv.sweep("paper", v0=[1, 2]), ["sweep", "--scene", "paper", "--v0", "1,2",
                                              "--out", "/tmp/ivv-python-test-never.csv"]),
+    (lambda: ivv.sweep("paper", v0=[1], zeta=[0], impactor_mass=[0.5, -1]),
+     ["sweep", "--scene", "paper", "--v0", "1", "--zeta", "0", "--set", "impactor.mass=0.5,-1",
+      "--out", "/tmp/ivv-python-test-never.csv"]),
 ]
 
 
