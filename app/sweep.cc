@@ -61,7 +61,7 @@ struct ParsedSweep {
 ParsedSweep parse_sweep(const ModelFlags& f, const SweepFlags& sf) {
   ParsedSweep p;
   SweepRequest& req = p.request;
-  req.base = to_request(to_options(f));
+  req.base = to_sweep_base(to_options(f));
   req.velocities = parse_grid(sf.v0_grid, "--v0", sf.log);
   if (sf.zeta_given)
     req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);

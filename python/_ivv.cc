@@ -339,7 +339,7 @@ py::dict sweep(const PyScene& s, const std::vector<double>& v0,
                const std::optional<std::vector<double>>& zeta, int threads, const py::dict& kw,
                const std::vector<std::pair<std::string, std::vector<double>>>& axes) {
   SweepRequest req;
-  req.base = to_request(s.scene, request_options(s, kw, "sweep()"));
+  req.base = to_sweep_base(s.scene, request_options(s, kw, "sweep()"));
   req.velocities = v0;
   if (zeta)
     req.zetas = *zeta;

@@ -6,6 +6,7 @@
 
 #include "scene/input_error.h"
 #include "solver/integrator_choice.h"
+#include "solver/plate/plate_run.h"
 
 namespace ivv {
 namespace {
@@ -103,6 +104,27 @@ SimulationRequest to_request(Scene scene, const RequestOptions& o) {
   apply_law(o, req);
   apply_integration(o, req);
   naming_overrides(o, [&] { validate(req); });
+  return req;
+}
+
+SimulationRequest to_sweep_base(const RequestOptions& o) {
+  return to_sweep_base(load_scene(o.scene), o);
+}
+
+SimulationRequest to_sweep_base(Scene scene, const RequestOptions& o) {
+  if (!has_finite_plate(scene)) return to_request(std::move(scene), o);
+  refuse_dashpot_and_integrator_flags(o);
+  if (o.model != "auto" && o.model != "full")
+    throw InputError("--model", "a sweep on a finite plate runs the full plate: auto or full");
+  SimulationRequest req;
+  req.scene = std::move(scene);
+  apply_scene_overrides(o, req.scene);
+  apply_law(o, req);
+  apply_integration(o, req);
+  naming_overrides(o, [&] {
+    validate(req.options);
+    validate_plate_impact(req.scene, req.law, req.parameters);
+  });
   return req;
 }
 

@@ -57,6 +57,13 @@ SimulationRequest to_request(const RequestOptions& options);
 // The same for a scene the front end already holds (the Python module's ivv.scene):
 // options.scene is not read; the overrides of `options` apply to `scene`.
 SimulationRequest to_request(Scene scene, const RequestOptions& options);
+// The request every point of a sweep starts from: as to_request(), except that a scene with a
+// finite plate is checked as its plate runs (solver/plate/plate_impact.h: no dashpot flag, no
+// expression law, a rate-independent law) instead of refused, since a sweep runs such points on
+// the plate (solver/sweep.cc).
+SimulationRequest to_sweep_base(const RequestOptions& options);
+// The same for a scene the front end already holds (the Python module): options.scene unread.
+SimulationRequest to_sweep_base(Scene scene, const RequestOptions& options);
 // `scene` with the overrides of `options` (--v0, --zeta, --c, --lambda, --no-dashpot) applied
 // and validated on its own, without a law; InputError naming the flag of an override at fault,
 // as to_request() names it.

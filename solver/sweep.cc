@@ -7,6 +7,7 @@
 
 #include "solver/format.h"
 #include "solver/parallel.h"
+#include "solver/plate/plate_impact.h"
 
 namespace ivv {
 namespace {
@@ -28,9 +29,18 @@ std::string point_label(const SweepRequest& req, std::size_t index, const PointI
   return label + ")";
 }
 
+// A finite plate's point: the full plate with the sweep's tolerances (solver/plate/plate_impact.h).
+ImpactResult simulate_plate_point(const SimulationRequest& point) {
+  PlateImpactOptions opt;
+  opt.rtol = point.options.rtol;
+  opt.atol = point.options.atol;
+  return as_sweep_result(simulate_plate_impact(point.scene, point.law, point.parameters, opt));
+}
+
 ImpactResult simulate_point(const SweepRequest& req, std::size_t index, const PointInputs& in) {
   try {
     const SimulationRequest point = point_request(req, index);
+    if (has_finite_plate(point.scene)) return simulate_plate_point(point);
     return simulate(ValidatedRequest::grid_point(req, point));
   } catch (const std::exception& e) {
     throw std::runtime_error(point_label(req, index, in) + ": " + e.what());

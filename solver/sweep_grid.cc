@@ -4,10 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "scene/scene_values.h"
 #include "solver/format.h"
+#include "solver/plate/plate_impact.h"
 
 namespace ivv {
 
@@ -194,7 +196,8 @@ PointInputs point_inputs(const SweepRequest& req, std::size_t index) {
   Scene s = req.base.scene;  // the scene dashpot's zeta depends on v0 and on the axes
   s.velocity = p.v0;
   apply_axes(req, p.axes, s);
-  p.zeta = derive(s).zeta;
+  // a finite plate has no dashpot: no zeta (derive() gives the infinite plate's)
+  p.zeta = has_finite_plate(s) ? std::numeric_limits<double>::quiet_NaN() : derive(s).zeta;
   return p;
 }
 

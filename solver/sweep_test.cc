@@ -19,6 +19,8 @@
 #include <sstream>
 
 #include "scene/input_error.h"
+#include "solver/plate/plate_impact.h"
+#include "solver/request_options.h"
 
 namespace ivv {
 namespace {
@@ -555,6 +557,50 @@ TEST(SweepStream, AReaderThatStopsReadingStopsTheSweep) {
   }
   std::signal(SIGPIPE, previous);
   std::fclose(stream);
+}
+
+// A sweep of the drop-weight coupon over v0 and the laminate's thickness: each row is the full
+// plate's run at that point (the same numbers as simulate_plate_impact), no zeta.
+SweepRequest coupon_grid() {
+  RequestOptions o;
+  o.scene = "drop-weight-coupon";
+  SweepRequest req;
+  req.base = to_sweep_base(o);
+  req.velocities = {1.0, 2.0};
+  req.scene_dashpot = true;
+  req.axes = {{"structure.thickness", {0.003, 0.004}}};
+  req.threads = 1;
+  return req;
+}
+
+TEST(SweepFinitePlate, EachRowIsThePlatesRunAtThatPoint) {
+  const SweepRequest req = coupon_grid();
+  const std::vector<SweepPoint> points = run_sweep(req);
+  ASSERT_EQ(points.size(), 4u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const SimulationRequest r = point_request(req, i);
+    const PlateImpactResult plate = simulate_plate_impact(r.scene, r.law, r.parameters, {});
+    ASSERT_TRUE(plate.ok) << plate.reason;
+    EXPECT_EQ(points[i].result.e, plate.e) << i;  // same run, same bits
+    EXPECT_EQ(points[i].result.F_max, plate.F_max) << i;
+    EXPECT_EQ(points[i].result.route, "finite-plate");
+    EXPECT_TRUE(std::isnan(points[i].zeta)) << "a finite plate has no dashpot, so no zeta";
+  }
+  EXPECT_GT(points[3].result.e, 0.9);  // 2 m/s on 4 mm: the coupon throws the striker back
+}
+
+TEST(SweepFinitePlate, DashpotAndIntegratorFlagsAreBadInput) {
+  SweepRequest req = coupon_grid();
+  req.scene_dashpot = false;
+  req.zetas = {0.1};
+  EXPECT_EQ(field_of(req), "--zeta");
+  RequestOptions o;
+  o.scene = "drop-weight-coupon";
+  o.integrator = "rodas4";
+  EXPECT_THROW(to_sweep_base(o), InputError);
+  o.integrator = "auto";
+  o.expression.force = "K_h*z^1.5";
+  EXPECT_THROW(to_sweep_base(o), InputError);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "scene/scene_values.h"
 #include "solver/format.h"
 #include "solver/parallel.h"
+#include "solver/plate/plate_impact.h"
 
 namespace ivv {
 
@@ -41,11 +42,32 @@ std::string flag_of(const SweepRequest& req, const std::string& field) {
   return field;
 }
 
+// A point on a finite plate: the plate's checks (solver/plate/plate_impact.h), its tolerances,
+// and no integrator or expression law it would ignore (its modes run on dop853).
+void validate_finite_plate_point(const SimulationRequest& r) {
+  if (!r.auto_integrator)
+    throw InputError("--integrator",
+                     "not used with a finite plate (the plate's modes are integrated by dop853 "
+                     "with event location); leave it auto");
+  if (!r.expression.force.empty())
+    throw InputError("--force", "an expression law is not modelled on a finite plate yet");
+  validate(r.options);
+  validate_plate_impact(r.scene, r.law, r.parameters);
+}
+
 // Validates point `r` of the sweep, naming a field of the scene that the sweep sets by the flag
 // that set it.
+// One point, on a finite plate or with the dashpot.
+void validate_request(const SimulationRequest& r) {
+  if (has_finite_plate(r.scene))
+    validate_finite_plate_point(r);
+  else
+    validate(r);
+}
+
 void validate_point(const SweepRequest& req, const SimulationRequest& r) {
   try {
-    validate(r);
+    validate_request(r);
   } catch (const InputError& e) {
     const std::string flag = flag_of(req, e.field());
     if (flag != e.field()) throw as_flag(e, flag);
@@ -127,7 +149,7 @@ void validate_corners(const SweepRequest& req) {
     for (std::size_t k = 0; k < axes.size(); ++k)
       set_scene_value(r.scene, req.axes[k].key, pick(axes[k], 2 + k));
     try {
-      validate(r);
+      validate_request(r);
     } catch (const InputError& e) {
       std::string where = "--v0 " + shortest(r.scene.velocity);
       if (!req.scene_dashpot) where += " --zeta " + shortest(pick(zeta, 1));
@@ -158,6 +180,11 @@ void validate_scene_dashpot(const SweepRequest& req) {
 // first v0 a valid request (a rate-dependent law with a dashpot is refused there, naming --zeta).
 void validate_velocities_and_zetas(const SweepRequest& req) {
   if (req.zetas.empty()) throw InputError("--zeta", "the damping grid is empty");
+  if (has_finite_plate(req.base.scene))
+    throw InputError("--zeta",
+                     "not used with a finite plate (its modes carry the energy away; without "
+                     "length_x/length_y the plate is infinite and has the dashpot): leave --zeta "
+                     "out to sweep the plate");
   for (double v : req.velocities)
     if (!(std::isfinite(v) && v > 0))
       throw InputError("--v0", "velocities must be finite and > 0 m/s, got " + shortest(v));

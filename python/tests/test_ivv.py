@@ -241,6 +241,18 @@ def test_sweep_equals_the_cli_csv(tmp_path):
     assert set(columns["status"]) >= {"separated"}
 
 
+def test_sweep_on_a_finite_plate_equals_the_cli_csv(tmp_path):
+    out = tmp_path / "plate.csv"
+    run = cli("sweep", "--scene", "drop-weight-coupon", "--v0", "1,2", "--set",
+              "structure.thickness=0.003,0.004", "--out", str(out), "-q")
+    assert run.returncode == 0, run.stderr
+    columns = ivv.sweep("drop-weight-coupon", v0=[1, 2], structure_thickness=[0.003, 0.004])
+    assert_columns_equal_csv(columns, read_sweep_csv(out))
+    assert set(columns["route"]) == {"finite-plate"}
+    with pytest.raises(ivv.InputError, match="--zeta"):
+        ivv.sweep("drop-weight-coupon", v0=[1], zeta=[0.1])
+
+
 def test_sweep_over_scene_values_equals_the_cli_csv(tmp_path):
     """ivv.sweep(**axes) is `ivv sweep --set KEY=...`: the same rows, a column per axis."""
     out = tmp_path / "grid.csv"

@@ -80,11 +80,40 @@ PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedPar
 
 }  // namespace
 
+void validate_plate_impact(const Scene& scene, LawKind law, const LawParameters& parameters) {
+  require_plate_scene(scene, law);
+  validate_parameters(law, parameters);
+}
+
+ImpactResult as_sweep_result(const PlateImpactResult& r) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  ImpactResult out;
+  out.route = "finite-plate";
+  out.integrator = "dop853";
+  out.steps = r.steps + r.free_flight_steps;
+  out.rhs_evaluations = r.rhs_evaluations;
+  if (!r.ok) {
+    out.status = ImpactStatus::failed;
+    out.failure = FailureKind::integrator;  // the plate driver's integration (its reason says how)
+    out.reason = r.reason;
+    return out;
+  }
+  out.status = ImpactStatus::separated;
+  out.e = r.e;
+  out.e_poisson = out.e_energetic = nan;
+  out.F_max = r.F_max;
+  out.t_F_max = nan;
+  out.t_contact = r.t_contact;
+  out.z_max = r.z_max;
+  out.alpha_max = out.z_perm = nan;
+  out.energy.residual = r.energy.max_error * r.energy.initial;
+  return out;
+}
+
 PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
                                         const LawParameters& parameters,
                                         const PlateImpactOptions& options) {
-  require_plate_scene(scene, law);
-  validate_parameters(law, parameters);
+  validate_plate_impact(scene, law, parameters);
   const DerivedParameters p = derive(scene);
   return with_builtin_law(law, parameters, p,
                           [&](const auto& l) { return run_plate(l, scene, p, options); });

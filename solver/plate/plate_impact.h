@@ -51,6 +51,7 @@
 #include "scene/scene.h"
 #include "solver/law_parameters.h"
 #include "solver/law_registry.h"
+#include "solver/result.h"
 
 namespace ivv {
 
@@ -130,5 +131,17 @@ PlateImpactResult simulate_plate_impact(const Scene& scene, LawKind law,
 
 // True when the scene's struck structure is a finite plate (its impact runs here).
 bool has_finite_plate(const Scene& scene);
+
+// The checks simulate_plate_impact() makes before it runs (InputError naming the field): the
+// scene with its finite plate, a rate-independent built-in law with the values it needs, its
+// parameters.
+void validate_plate_impact(const Scene& scene, LawKind law, const LawParameters& parameters);
+
+// A plate impact as one row of a sweep (solver/sweep_csv.h): e, F_max, t_contact (the first
+// contact), z_max, the steps (integration + free flight) and energy.residual = the ledger's
+// largest error [J]; route "finite-plate", integrator "dop853"; the columns a plate run does not
+// define (e_poisson, e_energetic, t_F_max, alpha_max, z_perm) are NaN. Status separated, or
+// failed with the reason.
+ImpactResult as_sweep_result(const PlateImpactResult& r);
 
 }  // namespace ivv
