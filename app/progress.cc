@@ -28,6 +28,9 @@ void ProgressLine::update(std::size_t done, std::size_t total) {
   if (elapsed < 1.0) return;
   const double since_last = std::chrono::duration<double>(now - last_).count();
   if (done < total && since_last < (tty_ ? 0.2 : 5.0)) return;
+  // a batch of rows delivered at once reports the same count once per row: print it once
+  if (done == printed_done_) return;
+  printed_done_ = done;
   last_ = now;
   const double rate = (done - start_done_) / elapsed;
   const std::string eta = rate > 0 ? duration((total - done) / rate) : "?";

@@ -26,6 +26,7 @@ class ProgressLine {
   Clock::time_point last_{};
   bool tty_;
   bool drawn_ = false;
+  std::size_t printed_done_ = static_cast<std::size_t>(-1);  // the count last printed
 };
 
 }  // namespace ivv
