@@ -165,6 +165,18 @@ TEST(Cli, SceneShowPrintsDerivedParameters) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }
 
+TEST(Cli, SceneShowNamesAFinitePlatesRegime) {
+  const CliRun r = ivv("scene show --scene drop-weight-coupon");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("regime       plate-dynamics"), std::string::npos) << r.out;
+  const CliRun j = ivv("scene show --json --scene steel-ball-on-finite-steel-plate");
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto json = nlohmann::json::parse(j.out);
+  EXPECT_EQ(json["regime"]["regime"], "infinite-plate");
+  EXPECT_EQ(json["regime"]["law"], "hertz");  // the scene has no yield strength
+  EXPECT_LT(json["regime"]["mass_ratio"].get<double>(), 0.23);
+}
+
 TEST(Cli, TrajectoryCsvIsWritten) {
   const fs::path csv = scratch("traj.csv");
   const CliRun r = ivv("simulate --scene paper --v0 1 --zeta 0.1 --trajectory " + csv.string());

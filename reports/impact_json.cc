@@ -203,6 +203,8 @@ nlohmann::json plate_model_choice_json(const PlateRun& run) {
           {"models", models}};
 }
 
+}  // namespace
+
 nlohmann::json plate_regime_json(const PlateRegime& g) {
   return {{"mass_ratio", finite_or_null(g.mass_ratio)},
           {"wave_return_time", finite_or_null(g.wave_return_time)},
@@ -214,8 +216,6 @@ nlohmann::json plate_regime_json(const PlateRegime& g) {
           {"regime", g.regime},
           {"olsson_mass_criterion", g.olsson}};
 }
-
-}  // namespace
 
 nlohmann::json plate_simulation_json(const PlateRun& run) {
   const Scene& s = run.scene;

@@ -31,5 +31,8 @@ nlohmann::json simulation_json(const SimulationRun& run);
 // the first separation), contacts (each start, end, impulse, peak force), F_max over all,
 // t_contact (the first contact's duration), the mode count and compliances, the energy ledger.
 nlohmann::json plate_simulation_json(const PlateRun& run);
+// The regime's facts (mass ratio, wave return against contact time, relative stiffness, the
+// infinite plate's zeta, lambda and c, the regime, Olsson's class).
+nlohmann::json plate_regime_json(const PlateRegime& regime);
 
 }  // namespace ivv

@@ -156,8 +156,6 @@ std::string scene_summary(const Scene& s) {
   return out.str();
 }
 
-namespace {
-
 // The model the impact needs (solver/plate/plate_regime.h), and the answer it gives.
 std::string plate_regime_text(const PlateRun& run) {
   const PlateRegime& g = *run.regime;
@@ -186,8 +184,6 @@ std::string plate_regime_text(const PlateRun& run) {
       << " s, estimated error " << run.estimated_error() << "\n";
   return out.str();
 }
-
-}  // namespace
 
 std::string plate_impact_summary(const PlateRun& run) {
   const PlateImpactResult& r = run.result;

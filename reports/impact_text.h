@@ -26,6 +26,9 @@ std::string dashpot_text(const Scene& scene, const DerivedParameters& p);
 // F_max, the first contact's t_contact, the mode count and truncation, the energy ledger,
 // then the regime: every model against the full plate, and the model that answers.
 std::string plate_impact_summary(const PlateRun& run);
+// The regime lines alone (run.regime must be set): every model against the full plate, the
+// published criterion, the answer.
+std::string plate_regime_text(const PlateRun& run);
 
 // Lines for `scene show` of a finite plate: size, impact point, D's, mass against the
 // impactor's, the first mode's frequency and the static compliance under the impactor.
