@@ -37,7 +37,8 @@ class ConvolutionMarch {
         v0_(scene.velocity),
         dt_(opt.dt),
         t_max_(opt.t_max),
-        C_(opt.residual ? modes.residual_compliance : 0.0) {
+        C_(opt.residual ? modes.residual_compliance : 0.0),
+        record_(opt.record_force) {
     for (const PlateMode& md : modes.modes) {
       omega_.push_back(md.omega);
       gain_.push_back(md.gain);
@@ -63,6 +64,8 @@ class ConvolutionMarch {
     out.F_max = 0.0;
     for (const auto& c : out.contacts) out.F_max = std::max(out.F_max, c.peak_force);
     out.t_contact = out.contacts.front().t_end - out.contacts.front().t_start;
+    out.dt = dt_;
+    if (record_) out.force = force_;
     return out;
   }
 
@@ -143,6 +146,7 @@ class ConvolutionMarch {
 
   Law law_;
   double m_, v0_, dt_, t_max_, C_;
+  bool record_;
   std::vector<double> omega_, gain_, h_, force_;
   std::vector<long> active_;  // grid indices with F != 0
   History history_{}, loading_{};

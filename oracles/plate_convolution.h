@@ -40,9 +40,10 @@
 namespace ivv {
 
 struct ConvolutionOptions {
-  double dt = 0.0;       // grid step [s]
-  double t_max = 1.0;    // give up beyond this time [s] (a named failure)
-  bool residual = true;  // add C_res F (as PlateImpactOptions::residual)
+  double dt = 0.0;            // grid step [s]
+  double t_max = 1.0;         // give up beyond this time [s] (a named failure)
+  bool residual = true;       // add C_res F (as PlateImpactOptions::residual)
+  bool record_force = false;  // keep the force at every grid point (ConvolutionResult::force)
 };
 
 struct ConvolutionContact {
@@ -57,6 +58,8 @@ struct ConvolutionResult {
   double e = nan, e_first = nan, F_max = nan, t_contact = nan;
   std::vector<ConvolutionContact> contacts;
   long steps = 0;
+  std::vector<double> force;  // with options.record_force: F [N] at t = n dt, n = 0, 1, ...
+  double dt = nan;            // the grid step [s]
 };
 
 // The impact of the scene's impactor on the plate whose kept modes and residual compliance are

@@ -111,7 +111,10 @@ PlateRegimeSection plate_regime_section(const SectionOptions&) {
       "two-spring model &mdash; and names the regime after the cheapest one within the "
       "tolerance (<code>solver/plate/plate_regime.h</code>). The drop-weight coupon, the "
       "paper's own domain, is not an infinite plate: its dashpot captures the striker "
-      "that the bending coupon throws back.</p>\n";
+      "that the bending coupon throws back. The force histories of three plate impacts "
+      "(repeated contacts, reloading past z<sub>m</sub>, the coupon's vibration), by the modal "
+      "ODE and by the convolution oracle, are drawn with the cases "
+      "<code>plate.cross.convolution.*.contacts</code> in the table of every case.</p>\n";
   s.figures = {regime_map(map, scenes.coupon, 1e-3), regime_map(map, scenes.coupon, 1e-2),
                row_errors(map)};
   s.models_table_html = models_table(scenes);

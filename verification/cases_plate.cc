@@ -189,6 +189,7 @@ struct CrossRun {
 CrossRun cross_run(const CrossScene& c) {
   PlateImpactOptions opt;
   opt.cutoff = c.cutoff;
+  opt.record_force = true;  // for the force-history plot of the contacts case
   CrossRun r;
   r.ode = simulate_plate_impact(c.scene, c.law, {}, opt);
   if (!r.ode.ok) throw std::runtime_error("plate impact failed: " + r.ode.reason);
@@ -197,7 +198,7 @@ CrossRun cross_run(const CrossScene& c) {
   r.dt0 = std::min(r.ode.t_contact / 200.0, 0.2 / r.ode.omega_cut);
   for (int k = 0; k < 3; ++k) {
     const double dt = r.dt0 / (1 << k);
-    r.grid[k] = plate_impact_by_convolution(c.scene, c.law, {}, modes, {dt, 1.0, true});
+    r.grid[k] = plate_impact_by_convolution(c.scene, c.law, {}, modes, {dt, 1.0, true, k == 2});
     if (!r.grid[k].ok) throw std::runtime_error("convolution failed: " + r.grid[k].reason);
   }
   return r;
@@ -210,6 +211,36 @@ const CrossRun& cross(std::size_t i) {
   static std::array<CrossRun, 3> runs;
   std::call_once(once.at(i), [i] { runs[i] = cross_run(cross_scenes().at(i)); });
   return runs[i];
+}
+
+// The contact force of both implementations over the whole impact (every contact, reflections
+// and reloading visible), the convolution's grid strided to at most 400 points: drawn with the
+// case that counts the contacts, so the contacts it counts are seen.
+Plot force_history_plot(std::size_t i, const CrossRun& r) {
+  const CrossScene c = cross_scenes().at(i);
+  Plot p{.id = "plate-force-history-" + std::string(c.id),
+         .title = std::string("contact force: ") + c.what,
+         .x_label = "time t [ms]",
+         .y_label = "contact force F [N]",
+         .series = {}};
+  Series ode{"modal ODE (dop853), " + std::to_string(r.ode.mode_count) + " modes", {}, {}};
+  const auto& h = r.ode.force_history;  // four samples a step: at most ~1500 drawn
+  for (std::size_t n = 0, every = std::max<std::size_t>(1, h.size() / 1500); n < h.size();
+       n += every) {
+    ode.x.push_back(h[n][0] * 1e3);
+    ode.y.push_back(h[n][1]);
+  }
+  const ConvolutionResult& g = r.grid[2];
+  Series conv{"convolution oracle, dt = " + fmt(g.dt, 2) + " s", {}, {}, Series::Style::points};
+  const double t_end = r.ode.force_history.empty() ? 0.0 : r.ode.force_history.back()[0];
+  const std::size_t last = std::min(g.force.size(), static_cast<std::size_t>(t_end / g.dt) + 2);
+  const std::size_t stride = std::max<std::size_t>(1, last / 400);
+  for (std::size_t n = 0; n < last; n += stride) {
+    conv.x.push_back(static_cast<double>(n) * g.dt * 1e3);
+    conv.y.push_back(g.force[n]);
+  }
+  p.series = {ode, conv};
+  return p;
 }
 
 enum class Quantity { e, e_first, F_max, contacts };
@@ -236,7 +267,11 @@ Outcome cross_quantity(std::size_t i, Quantity q) {
       "modal ODE: " + fmt(ode, 10) + "; convolution at dt = " + fmt(r.dt0 / 4.0, 3) +
       " s: " + fmt(fine, 10) + " (2 dt: " + fmt(of(r.grid[1]), 10) +
       ", 4 dt: " + fmt(of(r.grid[0]), 10) + "), " + std::to_string(r.ode.mode_count) + " modes";
-  if (q == Quantity::contacts) return absolute(ode, fine, 0.0, detail);
+  if (q == Quantity::contacts) {
+    Outcome o = absolute(ode, fine, 0.0, detail);
+    o.plots.push_back(force_history_plot(i, r));
+    return o;
+  }
   return absolute(ode, fine, change, detail);
 }
 

@@ -43,6 +43,7 @@
 // at the end W_spring = W_p, the plastic work.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -74,6 +75,7 @@ struct PlateImpactOptions {
   enum class Stepper { dop853, odeint_dopri5 };
   Stepper stepper = Stepper::dop853;
   int max_contacts = 10000;
+  bool record_force = false;    // fill PlateImpactResult::force_history (for plots)
   long max_steps = 20'000'000;  // integration steps + free-flight steps
 };
 
@@ -117,6 +119,9 @@ struct PlateImpactResult {
   long steps = 0;              // integration steps (all contacts)
   long free_flight_steps = 0;  // bound/probe steps between contacts
   long rhs_evaluations = 0;
+  // With options.record_force: (t [s], F [N]) at the onset and four points of every step of
+  // every contact, from the stepper's interpolant (nothing between contacts).
+  std::vector<std::array<double, 2>> force_history;
 };
 
 // One impact of the scene's impactor on its finite plate ([structure] with length_x, length_y)

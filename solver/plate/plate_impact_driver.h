@@ -84,6 +84,7 @@ class PlateImpactDriver {
     c.t_start = t * scales_.time;
     const double v_start = x[1];
     stepper_.start(sys_, t, x);
+    if (opt_.record_force) out.force_history.push_back({t * scales_.time, 0.0});
     for (;;) {
       if (out.steps + out.free_flight_steps >= opt_.max_steps)
         throw PlateRunFailure{"more than " + std::to_string(opt_.max_steps) + " steps"};
@@ -92,6 +93,7 @@ class PlateImpactDriver {
       if (!r.ok) throw PlateRunFailure{r.reason};
       if (!sys_.failure().empty()) throw PlateRunFailure{sys_.failure()};
       const std::optional<Root> hit = locate(t, x);
+      if (opt_.record_force) record_force(stepper_.t0(), t, out);
       if (!hit && sys_.history.phase == Phase::unloading && System::z_kin(x) < zero_force_point())
         throw PlateRunFailure{
             "the force turned negative at t = " + std::to_string(t * scales_.time) +
@@ -107,6 +109,17 @@ class PlateImpactDriver {
     c.impulse = (v_start - x[1]) * scales_.energy / scales_.velocity;  // m v0 (alpha'_0 - alpha'_1)
     out.contacts.push_back(c);
     check_ledger(x, 0.0, out);
+  }
+
+  // Four samples of the force on the last step's interpolant over (ta, tb] (before an event
+  // changes the branch), for plots only.
+  void record_force(double ta, double tb, PlateImpactResult& out) {
+    for (int k = 1; k <= 4; ++k) {
+      const double tt = ta + 0.25 * k * (tb - ta);
+      stepper_.interpolate(sys_, tt, sample_);
+      out.force_history.push_back(
+          {tt * scales_.time, sys_.force(System::z_kin(sample_)) * sys_.force_scale()});
+    }
   }
 
   // The roots active on the current branch, earliest crossing on the last step: (t, x) set there.
@@ -226,7 +239,8 @@ class PlateImpactDriver {
   PlateImpactOptions opt_;
   Stepper stepper_;
   typename System::History loading_history_{};
-  double reload_force_ = 0.0;  // F(z_m) on the unloading branch, normalised
+  double reload_force_ = 0.0;               // F(z_m) on the unloading branch, normalised
+  State sample_ = State(sys_.size(), 0.0);  // record_force()'s interpolated state
 };
 
 }  // namespace ivv
