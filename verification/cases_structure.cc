@@ -237,15 +237,15 @@ Outcome shipped_scenes() {
 
 void register_structure_cases(Registry& reg) {
   reg.add({"structure.formula.plate", "plate dashpot 8 sqrt(rho h D) vs the mode count of a plate",
-           Tier::analytic, kWeylReason, false, plate_formula});
+           Tier::analytic, kWeylReason, Cost::quick, plate_formula});
   reg.add({"structure.formula.bar", "bar dashpot A sqrt(E rho) vs the mode count of a bar",
            Tier::analytic,
            "the modes of a bar are evenly spaced and the band holds exactly 1000 of them: the "
            "count is exact, and the two routes differ by rounding over ~10 operations",
-           false, bar_formula});
+           Cost::quick, bar_formula});
   reg.add({"structure.formula.plate+bar",
            "a plate+bar scene's c vs the series of the two counted impedances", Tier::analytic,
-           kWeylReason, false, series_formula});
+           kWeylReason, Cost::quick, series_formula});
   const char* series_reason =
       "the sum of the two stated errors: the run's, accumulated_error_bound (solver/"
       "consistency.h: each accepted step adds at most its local error to u = alpha'/v0, up to "
@@ -258,7 +258,7 @@ void register_structure_cases(Registry& reg) {
     reg.add({ids[i],
              "Zener's plate impact: e at lambda against a 50-digit Taylor-series solution of "
              "Zener's equation (oracles/zener.h)",
-             Tier::analytic, series_reason, false, [i] { return series_value(i); }});
+             Tier::analytic, series_reason, Cost::quick, [i] { return series_value(i); }});
   }
   reg.add({"structure.zener.small-lambda-slope",
            "1 - e = a lambda as lambda -> 0, a by quadrature of the undamped Hertz impact",
@@ -267,13 +267,13 @@ void register_structure_cases(Registry& reg) {
            " at lambda = 1e-3; the O(lambda^2) remainder (estimated in the detail from 2e-3 and "
            "4e-3) is ~1e-6 of a, and e to 1e-10 at rtol 1e-12 puts 1e-7 on g: 1e-4 is ten times "
            "their sum",
-           false, small_lambda_slope});
+           Cost::quick, small_lambda_slope});
   reg.add({"structure.zener.similarity",
            "same lambda, different m, R, E*, h, rho, v0: same e, t_f v0/z*, F_max/(K_h z*^1.5)",
            Tier::analytic,
            "the runs integrate in normalised variables at rtol 1e-12 over < 1000 steps: each is "
            "within N rtol ~ 1e-9 of the one normalised solution; 1e-8 is ten times that",
-           false, similarity});
+           Cost::quick, similarity});
   for (IntegratorKind k : all_integrators()) {
     if (k == IntegratorKind::mp50) continue;
     const Tolerance tol = default_settings_tolerance(k);
@@ -287,26 +287,26 @@ void register_structure_cases(Registry& reg) {
                  "of e there would magnify the same error 1e4 to 1e5 times",
              // slow: each case integrates the nine 50-digit references (~7 s CPU, 30-40 s
              // wall on the shared 2-core machine); `make test-all` runs them
-             true, [k, tol] { return zener_cross(k, tol.value); }});
+             Cost::slow, [k, tol] { return zener_cross(k, tol.value); }});
   }
   reg.add({"structure.scenes", "shipped structure scenes hold the D* and mass they derive",
            Tier::analytic,
-           "the files write 4 to 6 significant digits (the mass 0.004168 kg to 5e-5): 1e-4", false,
-           shipped_scenes});
+           "the files write 4 to 6 significant digits (the mass 0.004168 kg to 5e-5): 1e-4",
+           Cost::quick, shipped_scenes});
   reg.add(
       {"structure.laminate.thickness-for-zeta-0.1",
        "the paper's impactor: the T300/934 plate thickness whose dashpot alone gives zeta = 0.1",
        Tier::analytic,
        "h = sqrt(c/(8 sqrt(rho D*/h^3))) inverts c = 8 sqrt(rho h D*) exactly; the scene "
        "built at that h must give zeta = 0.1 to rounding (1e-12)",
-       false, thickness_for_paper_zeta});
+       Cost::quick, thickness_for_paper_zeta});
   reg.add({"structure.laminate.cor-thickness",
            "paper impactor on a T300/934 plate: e rises with h where it rebounds, falls with v0",
            Tier::published_trend,
            "an ordering of runs at rtol 1e-10 (e to ~1e-8); where judged (e >= 1e-3) neighbouring "
            "thicknesses differ by 18% in h and their e by far more than that error; near "
            "capture e is not monotone in h (the detail's rows; see the comment)",
-           false, laminate_trend});
+           Cost::quick, laminate_trend});
 }
 
 }  // namespace ivv::verification
