@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -132,6 +133,52 @@ void serve_as_worker(const SweepRequest& req) {
   send_text(rows, 0, kFinal);
 }
 
+// Rank 0's main thread: hands chunks to the other `ranks` ranks and delivers their rows to
+// the sink (polling, so that it does not spin a core that workers need), until each has sent
+// its final rows or an error. `delivered(rank, rows)` is called after each delivery. Returns the
+// first error a rank reported ("" when none); throws when the sink cannot write.
+std::string answer_ranks(int ranks, SweepSink& sink, const SweepRunOptions& options,
+                         std::size_t chunk,
+                         const std::function<void(int, std::size_t)>& delivered) {
+  std::string remote_error;
+  int active = ranks;
+  std::deque<int> waiting;  // ranks that asked while the reorder window was full
+  auto answer = [&](int rank) {
+    const std::vector<std::size_t> work = sink.take(chunk, false);
+    if (work.empty() && !sink.exhausted()) return false;  // window full: ask again later
+    send_work(work, rank);
+    return true;
+  };
+  while (active > 0) {
+    if (options.stop && *options.stop) sink.request_stop();
+    for (std::size_t n = waiting.size(); n > 0; --n) {
+      const int rank = waiting.front();
+      waiting.pop_front();
+      if (!answer(rank)) waiting.push_back(rank);
+    }
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (!flag) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      continue;
+    }
+    const std::string text = receive_text(status.MPI_SOURCE, status.MPI_TAG, nullptr);
+    if (status.MPI_TAG == kError) {
+      if (remote_error.empty()) remote_error = text;
+      sink.request_stop();
+      --active;
+      continue;
+    }
+    delivered(status.MPI_SOURCE, deliver_lines(text, sink));
+    if (status.MPI_TAG == kFinal)
+      --active;
+    else if (!answer(status.MPI_SOURCE))
+      waiting.push_back(status.MPI_SOURCE);
+  }
+  return remote_error;
+}
+
 // Rank 0: its own threads take chunks from the sink like any rank, while the main thread
 // answers the other ranks (polling, so that it does not spin a core that workers need).
 std::vector<std::size_t> coordinate(World& world, const SweepRequest& req, SweepSink& sink,
@@ -163,47 +210,15 @@ std::vector<std::size_t> coordinate(World& world, const SweepRequest& req, Sweep
   });
 
   std::string remote_error;
-  int active = world.size() - 1;
-  std::deque<int> waiting;  // ranks that asked while the reorder window was full
-  auto answer = [&](int rank) {
-    const std::vector<std::size_t> work = sink.take(chunk, false);
-    if (work.empty() && !sink.exhausted()) return false;  // window full: ask again later
-    send_work(work, rank);
-    return true;
-  };
   try {
-    while (active > 0) {
-      if (options.stop && *options.stop) sink.request_stop();
-      for (std::size_t n = waiting.size(); n > 0; --n) {
-        const int rank = waiting.front();
-        waiting.pop_front();
-        if (!answer(rank)) waiting.push_back(rank);
-      }
-      int flag = 0;
-      MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
-      if (!flag) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        continue;
-      }
-      const std::string text = receive_text(status.MPI_SOURCE, status.MPI_TAG, nullptr);
-      if (status.MPI_TAG == kError) {
-        if (remote_error.empty()) remote_error = text;
-        sink.request_stop();
-        --active;
-        continue;
-      }
-      const std::size_t rows = deliver_lines(text, sink);
-      {
-        std::lock_guard lock(progress_mutex);
-        computed[static_cast<std::size_t>(status.MPI_SOURCE)] += rows;
-      }
-      if (rows) local.progress(sink.done(), sink.total());
-      if (status.MPI_TAG == kFinal)
-        --active;
-      else if (!answer(status.MPI_SOURCE))
-        waiting.push_back(status.MPI_SOURCE);
-    }
+    remote_error =
+        answer_ranks(world.size() - 1, sink, options, chunk, [&](int rank, std::size_t rows) {
+          {
+            std::lock_guard lock(progress_mutex);
+            computed[static_cast<std::size_t>(rank)] += rows;
+          }
+          if (rows) local.progress(sink.done(), sink.total());
+        });
   } catch (const std::exception& e) {
     // The output could not be written: the ranks still computing cannot be told through the
     // protocol, so the job ends here (the journal keeps what was finished).

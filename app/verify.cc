@@ -42,7 +42,7 @@ class Verify final : public Command {
     const auto cases = select_cases(filter_);
     if (list_) {
       for (const Case* c : cases)
-        std::cout << c->id << "\t" << to_string(c->tier) << (c->slow ? "\tslow" : "") << "\t"
+        std::cout << c->id << "\t" << to_string(c->tier) << (c->slow() ? "\tslow" : "") << "\t"
                   << c->title << "\n";
       return 0;
     }

@@ -116,8 +116,9 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
   truth.scene = paper_scene();
   truth.scene.damping = Damping::coefficient(11440.0);
   truth.auto_integrator = true;
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.3, 5.0, 50), 0.01, true, true, 1, "bench"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.3, 5.0, 50), .u_e = 0.01, .seed = 1, .description = "bench"});
   CalibrationProblem problem{truth, data};
   set_parameter(problem.request, "c", 8000.0);
   set_parameter(problem.request, "yield_strength", 3e8);
@@ -387,16 +388,16 @@ void add_paper_targets(const Timing& timing, BenchReport& rep) {
     const DerivedParameters p = derive(s);
     double sink = 0;
     constexpr int kBatch = 1000;  // one call is below the clock's resolution
-    const double us = median_us(
-                          [&] {
-                            for (int i = 0; i < kBatch; ++i)
-                              sink +=
-                                  oracles::solve_linear_model(oracles::linear_model_input(s, p)).e;
-                          },
-                          timing) /
-                      kBatch;
+    const double us =
+        median_us(
+            [&] {
+              for (int i = 0; i < kBatch; ++i)
+                sink += closed_forms::solve_linear_model(closed_forms::linear_model_input(s, p)).e;
+            },
+            timing) /
+        kBatch;
     rep.targets.push_back(target("linearized closed form", 0.3, "us", sink != 0 ? us : kNaN,
-                                 "oracles::solve_linear_model on the paper scene, median of "
+                                 "closed_forms::solve_linear_model on the paper scene, median of "
                                  "batches of 1000 calls",
                                  "per-impact"));
   }

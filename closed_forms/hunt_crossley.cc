@@ -9,7 +9,7 @@
 
 #include "scene/input_error.h"
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 
 namespace {
 
@@ -144,4 +144,4 @@ double delivered_cor(const DampingMap& map, double e_target) {
   return hunt_crossley_cor(map.mu(e_target, 1.0));
 }
 
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

@@ -38,7 +38,7 @@
 #include <optional>
 #include <string_view>
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 
 // Below this u0 the series replaces the Lambert-W form (see above).
 inline constexpr double kSeriesMaxU0 = 0.01;
@@ -90,4 +90,4 @@ std::optional<DampingMap> find_damping_map(std::string_view name);
 // The e the exact relation gives for the mu a map picks for e_target.
 double delivered_cor(const DampingMap& map, double e_target);
 
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

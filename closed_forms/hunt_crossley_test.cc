@@ -12,7 +12,7 @@
 #include "scene/input_error.h"
 #include "solver/simulate.h"
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -110,7 +110,7 @@ TEST(HuntCrossley, MaximumIndentationTendsToHertz) {
   // (K/m) x_m^{5/2}/(5/2) = v0^2 f(u0)/u0^2 and f(u0)/u0^2 = 1/2 - u0/3 + O(u0^2): the
   // mu -> 0 limit is Hertz's (5 m v0^2/(4K))^{2/5}, and x_m falls with mu.
   const double K = 1.1e9, m = 0.5, v0 = 1.0;
-  const double hertz = solve_hertz(m, K, v0).z_max;
+  const double hertz = oracles::solve_hertz(m, K, v0).z_max;
   EXPECT_NEAR(solve_hunt_crossley({K, 0.0, m, v0}).x_max / hertz, 1.0, kRoundOff);
   constexpr double kMu = 1e-6;  // u0 = 1e-6: x_m/x_hertz = (1 - 2u0/3)^{2/5} ~ 1 - 0.27e-6
   EXPECT_NEAR(solve_hunt_crossley({K, kMu, m, v0}).x_max / hertz, 1.0 - 0.4 * (2.0 / 3.0) * kMu,
@@ -190,4 +190,4 @@ TEST(DampingMaps, TableIsCompleteAndNamed) {
 }
 
 }  // namespace
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

@@ -9,7 +9,7 @@
 
 #include "scene/input_error.h"
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 
 namespace {
 
@@ -342,4 +342,4 @@ double linear_spring_dashpot_cor(double zeta) {
   return std::exp(-std::numbers::pi * zeta / std::sqrt((1.0 - zeta) * (1.0 + zeta)));
 }
 
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

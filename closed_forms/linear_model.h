@@ -47,7 +47,7 @@
 
 #include "scene/scene.h"
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 
 // Inputs of one impact of the linearized model.
 struct LinearModelInput {
@@ -147,4 +147,4 @@ double linear_gamma_squared_eq21(double mass, double K_h, double K_y, double v0)
 // returns to zero, and the function returns 0 (capture).
 double linear_spring_dashpot_cor(double zeta);
 
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

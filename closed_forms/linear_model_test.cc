@@ -14,7 +14,7 @@
 #include "scene/input_error.h"
 #include "scene/scene.h"
 
-namespace ivv::oracles {
+namespace ivv::closed_forms {
 namespace {
 
 // Closed forms evaluated in double precision: tens of roundings of ~1.1e-16 each.
@@ -372,4 +372,4 @@ TEST(LinearSpringDashpot, KelvinVoigtRestitution) {
 }
 
 }  // namespace
-}  // namespace ivv::oracles
+}  // namespace ivv::closed_forms

@@ -6,7 +6,7 @@
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 
-namespace ivv {
+namespace ivv::closed_forms {
 namespace {
 
 // (4/5) B(2/5, 1/2) z_H / v0 is the Hertz contact time; this is its half up to u = (z/z_H)^{5/2}:
@@ -45,9 +45,9 @@ UndampedImpact undamped_hertz(double m, double K_h, double v0) {
 }
 
 // Undamped elastoplastic impact by energy; with `times`, t_max and t_contact too (tolerance
-// `tol` relative for the unloading quadrature).
-UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v0, bool times,
-                                      double tol) {
+// times->rtol relative for the unloading quadrature).
+UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v0,
+                                      std::optional<TimesQuadrature> times) {
   const double E0 = 0.5 * m * v0 * v0;
   const double sqrt_zy = std::sqrt(z_y);
   const double F_y = K_h * z_y * sqrt_zy;
@@ -69,6 +69,7 @@ UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v
   r.e = std::sqrt(W_u / E0);
   r.W_p = E0 - W_u;
   if (!times) return r;
+  const double tol = times->rtol;
   // loading: elastic leg 0 -> z_y (incomplete beta), plastic leg z_y -> z_m (harmonic).
   // Just above yield both legs are ill-conditioned (the impactor crosses z_y at the speed
   // sqrt(v0^2 - v_y^2) -> 0: the elastic leg's time falls, and the plastic leg's grows, by
@@ -111,4 +112,4 @@ UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v
   return r;
 }
 
-}  // namespace ivv
+}  // namespace ivv::closed_forms

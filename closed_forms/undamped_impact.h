@@ -19,8 +19,9 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
-namespace ivv {
+namespace ivv::closed_forms {
 
 struct UndampedImpact {
   bool yielded = false;
@@ -34,12 +35,18 @@ struct UndampedImpact {
 // The Hertz impact of mass m [kg] at v0 [m/s] on stiffness K_h [N/m^1.5], with its times.
 UndampedImpact undamped_hertz(double m, double K_h, double v0);
 
-// The undamped elastoplastic impact (yield deformation z_y [m]); with `times`, t_max and
-// t_contact too, the unloading quadrature to `tol` relative. Below yield: undamped_hertz().
-UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v0, bool times,
-                                      double tol);
+// Asks undamped_elastoplastic for t_max and t_contact too, the unloading quadrature to `rtol`
+// relative.
+struct TimesQuadrature {
+  double rtol = 1e-10;
+};
+
+// The undamped elastoplastic impact (yield deformation z_y [m]); its times only when asked
+// (`times`). Below yield: undamped_hertz().
+UndampedImpact undamped_elastoplastic(double m, double K_h, double z_y, double v0,
+                                      std::optional<TimesQuadrature> times = std::nullopt);
 
 // Hertz's maximum deformation (5 m v0^2/(4 K_h))^{2/5} [m].
 double hertz_z_max(double m, double K_h, double v0);
 
-}  // namespace ivv
+}  // namespace ivv::closed_forms

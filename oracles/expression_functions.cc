@@ -21,7 +21,7 @@ double or_nan(F&& f) {
 }
 
 double hc_cor(double u0) {
-  return or_nan([&] { return hunt_crossley_cor(u0); });
+  return or_nan([&] { return closed_forms::hunt_crossley_cor(u0); });
 }
 double kk_cor(double beta, double v) {
   return or_nan([&] { return kuwabara_kono_pade(kuwabara_kono_v_star(beta, v)); });
@@ -33,7 +33,7 @@ double tsuji(double e) {
   return or_nan([&] { return tsuji_beta(e); });
 }
 double linear(double zeta) {
-  return or_nan([&] { return linear_spring_dashpot_cor(zeta); });
+  return or_nan([&] { return closed_forms::linear_spring_dashpot_cor(zeta); });
 }
 
 constexpr std::array kFunctions = {

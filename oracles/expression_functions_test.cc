@@ -21,10 +21,10 @@ const ExpressionFunction& function(std::string_view name) {
 }
 
 TEST(ExpressionFunctions, EachIsTheOracleItNames) {
-  EXPECT_EQ(function("hc_cor").one(0.3), hunt_crossley_cor(0.3));
+  EXPECT_EQ(function("hc_cor").one(0.3), closed_forms::hunt_crossley_cor(0.3));
   EXPECT_EQ(function("kk_cor").two(0.02, 1.5), kuwabara_kono_pade(kuwabara_kono_v_star(0.02, 1.5)));
   EXPECT_EQ(function("thornton_cor").two(0.1, 2.0), thornton_cor(0.05));
-  EXPECT_EQ(function("linear_cor").one(0.1), linear_spring_dashpot_cor(0.1));
+  EXPECT_EQ(function("linear_cor").one(0.1), closed_forms::linear_spring_dashpot_cor(0.1));
   EXPECT_EQ(function("tsuji_beta").one(0.5), tsuji_beta(0.5));
   for (const ExpressionFunction& f : expression_functions())
     EXPECT_TRUE((f.one == nullptr) != (f.two == nullptr)) << f.name;
@@ -50,7 +50,7 @@ TEST(ExpressionFunctions, AClaimCallsThemByName) {
       compile_cor_claim("kk_cor(beta, v0)", {{"beta", 0.02}}, paper, expression_functions());
   EXPECT_EQ(claim(1.5), kuwabara_kono_pade(kuwabara_kono_v_star(0.02, 1.5)));
   const auto hc = compile_cor_claim("hc_cor(u)", {{"u", 0.4}}, paper, expression_functions());
-  EXPECT_EQ(hc(3.0), hunt_crossley_cor(0.4));
+  EXPECT_EQ(hc(3.0), closed_forms::hunt_crossley_cor(0.4));
   // without the table the name is unknown, and the error names the column
   EXPECT_THROW(compile_cor_claim("hc_cor(u)", {{"u", 0.4}}, paper), ExpressionError);
 }

@@ -118,16 +118,16 @@ class ConvolutionMarch {
     double F = solve(zk);
     double z = zk - C_ * F;
     if (history_.phase == Phase::loading) {
-      const std::optional<double> z_end = law_.segment_end(history_);
+      const std::optional<double> z_end = law_segment_end(law_, history_);
       if (z_end && z > *z_end) {
-        law_.next_segment(history_);
+        law_next_segment(law_, history_);
         F = solve(zk);
         z = zk - C_ * F;
       }
       if (z < z_prev_[1]) {  // a maximum of z was passed: unload from its parabola's vertex
         const auto v = parabola_maximum(z_prev_[0], z_prev_[1], z);
         loading_ = history_;
-        law_.begin_unloading(history_, v ? v->value : z_prev_[1]);
+        law_begin_unloading(law_, history_, v ? v->value : z_prev_[1]);
         F = solve(zk);
         z = zk - C_ * F;
       }

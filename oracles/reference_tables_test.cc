@@ -41,11 +41,12 @@ TEST(ReferenceTables, HuntCrossleyMaps) {
       read_hunt_crossley_map_table(reference_data_dir() / "hunt_crossley_mu_maps.csv");
   ASSERT_EQ(rows.size(), 7u * 11u);
   for (const HuntCrossleyMapRow& row : rows) {
-    const auto map = find_damping_map(row.model);
+    const auto map = closed_forms::find_damping_map(row.model);
     ASSERT_TRUE(map.has_value()) << "unknown model " << row.model;
     const std::string where = row.model + " at e_target " + std::to_string(row.e_target);
     expect_relative(map->mu(row.e_target, 1.0), row.u0, "u0 of " + where);
-    expect_relative(delivered_cor(*map, row.e_target), row.e_delivered, "e_delivered of " + where);
+    expect_relative(closed_forms::delivered_cor(*map, row.e_target), row.e_delivered,
+                    "e_delivered of " + where);
   }
 }
 

@@ -1,27 +1,12 @@
-// Tests of the structure oracles: modal-count impedances and Zener's small-lambda slope.
+// Tests of the structure oracles: modal-count impedances.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "oracles/structure_impedance.h"
-#include "oracles/zener.h"
 
 namespace ivv::oracles {
 namespace {
-
-// The tanh-sinh rule converges to about 1e-15 on this integrand (smooth but for the
-// integrable inverse square root at the end, which the rule's endpoint clustering resolves);
-// 1e-12 relative leaves a margin of three digits over double rounding of the Beta function.
-TEST(Zener, SlopeQuadratureMatchesBetaFunction) {
-  EXPECT_NEAR(zener_small_lambda_slope() / zener_small_lambda_slope_closed_form(), 1.0, 1e-12);
-  EXPECT_NEAR(zener_small_lambda_slope(), 1.7301, 1e-4);  // hand value: 0.8 * 1.4291 * 1.5133
-}
-
-// The undamped contact time in Zener's units is the Hertz factor 2.9432752 times
-// z_m/z* = (5/4)^{2/5} (docs/design.md §2, Hertz undamped).
-TEST(Zener, UndampedContactTimeIsTheHertzFactor) {
-  EXPECT_NEAR(zener_undamped_contact_time(), 2.9432752 * std::pow(1.25, 0.4), 1e-6);
-}
 
 // Mode counting approaches 8 sqrt(rho h D) as the band moves up, with the excess Weyl's
 // boundary term predicts (within half of it: the lattice-count fluctuation is smaller).

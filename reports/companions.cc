@@ -64,7 +64,7 @@ std::string results_json(const std::vector<CaseRecord>& records) {
                      {"comparison", std::string(verification::to_string(o.comparison))},
                      {"margin", finite_or_null(o.margin())},
                      {"detail", o.detail},
-                     {"slow", r.c->slow},
+                     {"slow", r.c->slow()},
                      {"seconds", r.seconds}});
   }
   return nlohmann::json{{"cases", cases}}.dump(2) + "\n";

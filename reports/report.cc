@@ -415,7 +415,7 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
       "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
       "miss is within 10<sup>-6</sup>.</p>\n";
   std::vector<std::vector<std::string>> rows;
-  for (const auto& map : oracles::damping_maps())
+  for (const auto& map : closed_forms::damping_maps())
     for (double e_t : verification::example_target_cors())
       rows.push_back(
           delivered_row({escape(map.name), escape(map.formula)},

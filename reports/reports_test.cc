@@ -140,8 +140,10 @@ CaseRecord record(const verification::Case& c, verification::Outcome o, double s
 }
 
 TEST(Companions, ResultsJsonHasTheVerifyShape) {
-  verification::Case a{"analytic.a", "A", verification::Tier::analytic, "because", false, {}};
-  verification::Case b{"stability.b", "B", verification::Tier::stability, "why", false, {}};
+  verification::Case a{
+      "analytic.a", "A", verification::Tier::analytic, "because", verification::Cost::quick, {}};
+  verification::Case b{
+      "stability.b", "B", verification::Tier::stability, "why", verification::Cost::quick, {}};
   const std::vector<CaseRecord> records = {
       record(a, verification::relative(1.0, 1.0 + 1e-9, 1e-6, "close"), 0.5),
       record(b, verification::at_most(kNaN, 1e-3, "no measurement"), 0.25)};
@@ -160,8 +162,10 @@ TEST(Companions, ResultsJsonHasTheVerifyShape) {
 }
 
 TEST(Companions, JunitGroupsByTierAndDetailsFailures) {
-  verification::Case a{"analytic.a", "A", verification::Tier::analytic, "because", false, {}};
-  verification::Case b{"stability.<b>", "B", verification::Tier::stability, "why", false, {}};
+  verification::Case a{
+      "analytic.a", "A", verification::Tier::analytic, "because", verification::Cost::quick, {}};
+  verification::Case b{"stability.<b>",           "B", verification::Tier::stability, "why",
+                       verification::Cost::quick, {}};
   const std::vector<CaseRecord> records = {
       record(a, verification::relative(1.0, 1.0, 1e-6, "exact"), 0.5),
       record(b, verification::at_most(2e-3, 1e-3, "error too large"), 0.25)};

@@ -26,16 +26,15 @@ Figure zener_figure(const verification::StructureStudy& st) {
   Series sim =
       reports::curve("similarity scenes (4 unlike scenes, lambda = 0.5)", Series::Style::points);
   for (const auto& s : st.similarity) add(sim, s.point.lambda, s.point.e);
-  Series quoted = reports::curve("quoted: 0.84334, 0.43690, 0.18412", Series::Style::points);
-  for (std::size_t i = 0; i < st.published.size(); ++i)
-    add(quoted, st.published[i].lambda, st.published_values[i]);
-  f.plot.series = {curve, asym, sim, quoted};
+  Series series = reports::curve("Taylor-series solution, 50 digits", Series::Style::points);
+  for (const auto& z : st.series_solution) add(series, z.lambda, z.e);
+  f.plot.series = {curve, asym, sim, series};
   f.caption =
       "Zener's problem: the Hertz law in series with the dashpot of a large plate; e depends on "
       "lambda alone. Curve: 41 simulated impacts; dashed: the first-order loss 1 &minus; a&lambda; "
       "from the undamped Hertz impact; points: four scenes with different m, R, E*, h, &rho; and "
-      "v<sub>0</sub> at the same lambda, and three values quoted to 5 decimals by a review of ivv "
-      "(not traced to a publication). Beyond lambda "
+      "v<sub>0</sub> at the same lambda, and at three lambda an independent solution of Zener's "
+      "equation (a Taylor-series method in 50 digits, oracles/zener.h). Beyond lambda "
       "&asymp; 5 the plate nearly captures the sphere (e &lt; 1e-4).";
   f.full_width = true;
   f.source = Source::from_cases({"structure.zener.*"});

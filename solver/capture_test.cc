@@ -16,8 +16,8 @@ ImpactSystem<ElastoplasticLaw, Dashpot> unloading(double two_zeta) {
   ImpactSystem<ElastoplasticLaw, Dashpot> sys;
   sys.law = {1.0, 0.25, 1.5 * 0.5};
   sys.two_zeta = two_zeta;
-  sys.law.next_segment(sys.branch);
-  sys.law.begin_unloading(sys.branch, 0.5);
+  law_next_segment(sys.law, sys.branch);
+  law_begin_unloading(sys.law, sys.branch, 0.5);
   return sys;
 }
 

@@ -502,7 +502,7 @@ class ImpactDriver {
   void act(EventAction action, T te, const state_type& xe) {
     switch (action) {
       case EventAction::next_segment:
-        sys_.law.next_segment(sys_.branch);
+        law_next_segment(sys_.law, sys_.branch);
         break;
       case EventAction::begin_unloading:
         if (!System::rate_dependent) {
@@ -510,7 +510,7 @@ class ImpactDriver {
           run_.tau_F_max = te;
         }
         run_.tau_z_max = te;
-        sys_.law.begin_unloading(sys_.branch, T(sys_.length * sys_.z(xe)));
+        law_begin_unloading(sys_.law, sys_.branch, T(sys_.length * sys_.z(xe)));
         break;
       case EventAction::record_alpha_max:
         run_.has_max_displacement = true;

@@ -4,7 +4,7 @@
 // locate_earliest), which knows roots and directions only, and acts on the rows' meanings.
 //
 //   event             root g(x)                              direction  meaning
-//   yield             z - z_end (z_end = law.segment_end(h))  rising     next loading segment
+//   yield             z - z_end (z_end = law_segment_end)     rising     next loading segment
 //   max_compression   dz/dtau                                 falling    begin unloading at z_m
 //   max_displacement  w = dalpha/dtau                         falling    record alpha_c
 //   peak_force        dF/dtau (rate-dependent laws)           falling    record F_max
@@ -84,7 +84,7 @@ typename System::value_type event_root(EventKind k, const System& sys,
   using T = typename System::value_type;
   switch (k) {
     case EventKind::yield:
-      return sys.z(s) - T(*sys.law.segment_end(sys.branch) / sys.length);
+      return sys.z(s) - T(*law_segment_end(sys.law, sys.branch) / sys.length);
     case EventKind::max_compression:
       return sys.z_rate(s);
     case EventKind::max_displacement:
@@ -122,7 +122,7 @@ ActiveEvents active_events(const System& sys, const EventsFound& found,
                            const typename System::state_type& x1) {
   ActiveEvents a;
   const bool loading = sys.branch.phase == Phase::loading;
-  if (loading && sys.law.segment_end(sys.branch)) {
+  if (loading && law_segment_end(sys.law, sys.branch)) {
     const bool z_rising = sys.z_rate(x0) > 0 && sys.z_rate(x1) > 0;
     a.add(EventKind::yield, z_rising);
   }

@@ -66,8 +66,8 @@ TEST(ImpactEvents, YieldIsProbedOnAStepThatAlsoReachesMaxCompression) {
 
 TEST(ImpactEvents, UnloadingEndsAtSeparationOnceMaxDisplacementIsFound) {
   Plastic sys = plastic_system();
-  sys.law.next_segment(sys.branch);  // yielded: the permanent set z_f > 0
-  sys.law.begin_unloading(sys.branch, 0.5);
+  law_next_segment(sys.law, sys.branch);  // yielded: the permanent set z_f > 0
+  law_begin_unloading(sys.law, sys.branch, 0.5);
   ASSERT_GT(sys.branch.z_perm, 0.1);
   const Plastic::state_type x{0.6, -0.5, 0.45, 0, 0, 0};
   const ActiveEvents a = active_events(sys, EventsFound{true, false}, x, x);
@@ -87,7 +87,7 @@ TEST(ImpactEvents, RateDependentLawProbesPeakForceAndSeparation) {
             (std::vector<EventKind>{EventKind::max_compression, EventKind::max_displacement,
                                     EventKind::peak_force}));
   EXPECT_FALSE(loading.roots.roots[2].monotone);
-  sys.law.begin_unloading(sys.branch, 0.5);
+  law_begin_unloading(sys.law, sys.branch, 0.5);
   const ActiveEvents unloading = active_events(sys, EventsFound{true, true}, x0, x1);
   EXPECT_EQ(kinds(unloading), std::vector<EventKind>{EventKind::separation});
   EXPECT_FALSE(unloading.roots.roots[0].monotone);  // F = K z^{3/2} (1 + mu z') is not
@@ -104,9 +104,9 @@ void expect_roots_read_only_event_components(System sys, typename System::state_
         System::event_components.end())
       only[i] = std::nan("");
   for (bool unloading : {false, true}) {
-    if (unloading) sys.law.begin_unloading(sys.branch, 0.3);
+    if (unloading) law_begin_unloading(sys.law, sys.branch, 0.3);
     for (const ImpactEventRow& row : kImpactEvents) {
-      if (row.kind == EventKind::yield && !sys.law.segment_end(sys.branch)) continue;
+      if (row.kind == EventKind::yield && !law_segment_end(sys.law, sys.branch)) continue;
       EXPECT_EQ(event_root(row.kind, sys, only), event_root(row.kind, sys, x))
           << "event " << static_cast<int>(row.kind) << (unloading ? ", unloading" : ", loading");
     }

@@ -65,10 +65,6 @@ class LawDomainError : public std::runtime_error {
 //   force(h, z, v)           -> T [N]          smooth continuation on the branch of history h
 //   stiffness(h, z, v)       -> T [N/m]        dF/dz on that branch (implicit integrators, events)
 //   rate_stiffness(h, z, v)  -> T [N s/m]      dF/dv on that branch (0 for rate-independent laws)
-//   segment_end(h)           -> std::optional<double> [m]
-//                                              z where the current loading segment ends, if any
-//   next_segment(h)                            enter the next loading segment
-//   begin_unloading(h, z_m)                    switch to unloading (may throw LawDomainError)
 //   stored_energy(h, z)      -> T [J]          energy recoverable from z down to zero force on
 //                                              the unloading branch, the area under it from z_f
 //                                              to z (during first loading: the area under the
@@ -79,7 +75,17 @@ class LawDomainError : public std::runtime_error {
 //                                              branch, or nullopt if the law has none
 // Here h is history_t<L, T> (const, except for next_segment and begin_unloading), z and v are T.
 // segment_end and hysteresis_work return std::optional<double> for every T (not optional<T>).
-// Optional members, read through the traits below:
+// Optional members, read through the helpers below (a law with one loading curve and no extra
+// history - hertz, hunt-crossley, kuwabara-kono - declares none of the first three):
+//   segment_end(h)           -> std::optional<double> [m]
+//                                              z where the current loading segment ends, if any
+//                                              (default: none, one loading segment)
+//   next_segment(h)                            enter the next loading segment (default: nothing
+//                                              to do; only called after a segment_end)
+//   begin_unloading(h, z_m)                    switch to unloading (may throw LawDomainError);
+//                                              default: phase = unloading, z_max = z_m,
+//                                              z_perm = 0 (the unloading curve retraces the
+//                                              loading curve)
 //   History<T>                                 extra history (default Branch<T>)
 //   needs_yield_strength     bool             the law reads z_y/K_y (default false)
 //   allows_tension           bool (member)    F may go negative; contact ends at z = 0 instead
@@ -95,7 +101,9 @@ class LawDomainError : public std::runtime_error {
 //                                             (solver/onset_series.h); rate-independent laws only
 //
 // One concept per member, so that assert_contact_law (below) names the member at fault in the
-// first line of a compile error.
+// first line of a compile error. An optional member is detected by a call with the arguments
+// the driver passes; one declared with other parameters is not seen and the default applies
+// (the conformance checks, verification/conformance.h, then judge the law as it behaves).
 template <class L>
 concept law_has_name = requires {
   { L::name } -> std::convertible_to<std::string_view>;
@@ -117,15 +125,20 @@ concept law_has_rate_stiffness_member = requires(const L& law, const history_t<L
   { law.rate_stiffness(h, z, z) } -> std::convertible_to<T>;
 };
 template <class L, class T = double>
-concept law_has_segment_end_member = requires(const L& law, const history_t<L, T>& h) {
+concept law_declares_segment_end = requires(const L& law, const history_t<L, T>& h) {
+  law.segment_end(h);
+};
+template <class L, class T = double>
+concept law_has_segment_end_member =
+    !law_declares_segment_end<L, T> || requires(const L& law, const history_t<L, T>& h) {
   { law.segment_end(h) } -> std::same_as<std::optional<double>>;
 };
 template <class L, class T = double>
-concept law_has_next_segment_member = requires(const L& law, history_t<L, T>& h) {
+concept law_declares_next_segment = requires(const L& law, history_t<L, T>& h) {
   law.next_segment(h);
 };
 template <class L, class T = double>
-concept law_has_begin_unloading_member = requires(const L& law, history_t<L, T>& h, T z) {
+concept law_declares_begin_unloading = requires(const L& law, history_t<L, T>& h, T z) {
   law.begin_unloading(h, z);
 };
 template <class L, class T = double>
@@ -144,8 +157,7 @@ template <class L>
 concept law_has_force =
     law_has_force_member<L> && law_has_stiffness_member<L> && law_has_rate_stiffness_member<L>;
 template <class L>
-concept law_has_history = law_has_segment_end_member<L> && law_has_next_segment_member<L> &&
-    law_has_begin_unloading_member<L>;
+concept law_has_history = law_has_segment_end_member<L>;  // the others may be absent
 template <class L>
 concept law_has_energy = law_has_stored_energy_member<L> && law_has_hysteresis_work_member<L>;
 template <class L>
@@ -163,7 +175,7 @@ concept law_templated_on = requires(const L& law, const history_t<L, T>& h, T z)
 // are templates on the scalar. An expression law runs in double only.
 template <class L, class T>
 concept law_supports_scalar = law_has_force_member<L, T> && law_has_stiffness_member<L, T> &&
-    law_has_stored_energy_member<L, T> && law_has_begin_unloading_member<L, T>;
+    law_has_stored_energy_member<L, T>;
 
 // One static_assert per requirement, each naming its member: called by ivv::simulate(law, ...)
 // and the conformance API on double and, for a law templated on its scalar, on the 50-digit
@@ -188,14 +200,9 @@ constexpr bool assert_contact_law() {
                 "ivv::ContactLaw: member `rate_stiffness(h, z, v)` missing or mistyped: it must "
                 "take (const history_t<L, T>&, T z, T v) and return T [N s/m]");
   static_assert(law_has_segment_end_member<L, T>,
-                "ivv::ContactLaw: member `segment_end(h)` missing or mistyped: it must take "
-                "(const history_t<L, T>&) and return std::optional<double> [m] for every T");
-  static_assert(law_has_next_segment_member<L, T>,
-                "ivv::ContactLaw: member `next_segment(h)` missing or mistyped: it must take "
-                "(history_t<L, T>&)");
-  static_assert(law_has_begin_unloading_member<L, T>,
-                "ivv::ContactLaw: member `begin_unloading(h, z_m)` missing or mistyped: it must "
-                "take (history_t<L, T>&, T z_m)");
+                "ivv::ContactLaw: member `segment_end(h)` mistyped: it must take "
+                "(const history_t<L, T>&) and return std::optional<double> [m] for every T (or be "
+                "left out: one loading segment)");
   static_assert(law_has_stored_energy_member<L, T>,
                 "ivv::ContactLaw: member `stored_energy(h, z)` missing or mistyped: it must take "
                 "(const history_t<L, T>&, T z) and return T [J]");
@@ -204,6 +211,34 @@ constexpr bool assert_contact_law() {
                 "(const history_t<L, T>&) and return std::optional<double> [J] for every T (not "
                 "std::optional<T>)");
   return true;
+}
+
+// The law's segment_end(h) when it declares one, else nullopt (one loading segment).
+template <class L, class H>
+std::optional<double> law_segment_end(const L& law, const H& h) {
+  if constexpr (requires { law.segment_end(h); })
+    return law.segment_end(h);
+  else
+    return std::nullopt;
+}
+
+// The law's next_segment(h) when it declares one, else nothing (there is no next segment).
+template <class L, class H>
+void law_next_segment(const L& law, H& h) {
+  if constexpr (requires { law.next_segment(h); }) law.next_segment(h);
+}
+
+// The law's begin_unloading(h, z_m) when it declares one, else the unloading curve that
+// retraces the loading curve: phase unloading, z_max = z_m, no permanent set.
+template <class L, class H, class T>
+void law_begin_unloading(const L& law, H& h, const T& z_m) {
+  if constexpr (requires { law.begin_unloading(h, z_m); }) {
+    law.begin_unloading(h, z_m);
+  } else {
+    h.phase = Phase::unloading;
+    h.z_max = z_m;
+    h.z_perm = decltype(h.z_perm)(0);
+  }
 }
 
 template <class L>

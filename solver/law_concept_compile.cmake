@@ -10,13 +10,13 @@ foreach(dir IN LISTS INCLUDES)
   list(APPEND args -I${dir})
 endforeach()
 
-# member number, the name its first error line must contain, through simulate() (1) or the
+# member number, the name its first error line must contain ("-": the law must compile: the
+# good law, and laws that leave out an optional member), through simulate() (1) or the
 # concept's assert alone (0)
 set(cases
   "0;-;0" "1;`name`;0" "2;`rate_dependent`;0" "3;`force(h, z, v)`;0" "4;`stiffness(h, z, v)`;0"
-  "5;`rate_stiffness(h, z, v)`;0" "7;`next_segment(h)`;0"
-  "8;`begin_unloading(h, z_m)`;0" "9;`stored_energy(h, z)`;0" "11;`hysteresis_work(h)`;0"
-  "10;`hysteresis_work(h)`;1" "6;`segment_end(h)`;1")
+  "5;`rate_stiffness(h, z, v)`;0" "7;-;0" "8;-;0" "12;-;0" "9;`stored_energy(h, z)`;0"
+  "11;`hysteresis_work(h)`;0" "10;`hysteresis_work(h)`;1" "6;`segment_end(h)`;1")
 set(failures "")
 set(i 0)
 list(LENGTH cases n)
@@ -34,9 +34,9 @@ while(i LESS n)
                           -DIVV_THROUGH_SIMULATE=${through} ${SOURCE}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   set(what "member ${member} (through simulate: ${through})")
-  if(member EQUAL 0)
+  if(expected STREQUAL "-")
     if(NOT rc EQUAL 0)
-      string(APPEND failures "the good law does not compile:\n${err}\n")
+      string(APPEND failures "${what}: the law must compile, but does not:\n${err}\n")
     endif()
     continue()
   endif()

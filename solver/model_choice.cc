@@ -25,7 +25,7 @@ double rel(double x, double ref) {
 
 // The ImpactResult of an undamped closed form (routes 1 and 2).
 ImpactResult undamped_result(const Scene& scene, const DerivedParameters& p,
-                             const UndampedImpact& u) {
+                             const closed_forms::UndampedImpact& u) {
   ImpactResult r;
   const double v0 = scene.velocity, m = p.effective_mass;
   r.status = ImpactStatus::separated;
@@ -55,7 +55,8 @@ ImpactResult undamped_result(const Scene& scene, const DerivedParameters& p,
 
 // The ImpactResult of the linearized model's closed form (route 4, and the linearized law).
 ImpactResult linear_result(const Scene& scene, const DerivedParameters& p,
-                           const oracles::LinearModelInput& in, const oracles::LinearImpact& L) {
+                           const closed_forms::LinearModelInput& in,
+                           const closed_forms::LinearImpact& L) {
   ImpactResult r;
   const double v0 = scene.velocity, m = p.effective_mass;
   r.status = L.captured ? ImpactStatus::captured : ImpactStatus::separated;
@@ -80,7 +81,7 @@ ImpactResult linear_result(const Scene& scene, const DerivedParameters& p,
   r.energy.viscous = L.W_v;
   r.energy.residual = r.energy.initial - r.energy.final - r.energy.plastic - r.energy.viscous;
   auto event = [&](EventKind kind, double t) {
-    const oracles::LinearState s = oracles::linear_model_state(in, L, t);
+    const closed_forms::LinearState s = closed_forms::linear_model_state(in, L, t);
     return ImpactEvent{kind, t, s.z, s.alpha, std::max(0.0, s.F)};
   };
   r.events.push_back({EventKind::onset, 0.0, 0.0, 0.0, 0.0});
@@ -145,20 +146,21 @@ LinearEstimate linear_estimate(const Scene& scene, const DerivedParameters& p, d
   // quadrature, no linear solve): e_lin = gamma (eq 20) undamped
   if (!(p.v_yield > 0) || growth * kLinearDifferenceFloor / std::sqrt(v0 / p.v_yield) > rtol)
     return out;
-  const UndampedImpact nl = undamped_elastoplastic(m, p.K_h, p.z_y, v0, false, rtol);
+  const closed_forms::UndampedImpact nl = closed_forms::undamped_elastoplastic(m, p.K_h, p.z_y, v0);
   if (!nl.yielded) return out;
   // the linearized law is undefined below z_m = 2.25 z_y (eq 17): asked, not caught
-  const oracles::LinearModelInput undamped{m, p.K_h, p.K_y, 0.0, v0};
-  if (!oracles::linearized_law_defined(undamped)) return out;
-  const double g2 = oracles::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
+  const closed_forms::LinearModelInput undamped{m, p.K_h, p.K_y, 0.0, v0};
+  if (!closed_forms::linearized_law_defined(undamped)) return out;
+  const double g2 = closed_forms::linear_gamma_squared_eq20(m, p.K_h, p.K_y, v0);
   if (!(g2 > 0) || !(growth * rel(std::sqrt(g2), nl.e) <= rtol)) return out;
-  const oracles::LinearImpact lin0 = oracles::solve_linear_model(undamped);
-  const UndampedImpact nlt = undamped_elastoplastic(m, p.K_h, p.z_y, v0, true, rtol);
+  const closed_forms::LinearImpact lin0 = closed_forms::solve_linear_model(undamped);
+  const closed_forms::UndampedImpact nlt = closed_forms::undamped_elastoplastic(
+      m, p.K_h, p.z_y, v0, closed_forms::TimesQuadrature{rtol});
   out.D0 = std::max({rel(lin0.e, nlt.e), rel(lin0.z_max, nlt.z_max), rel(lin0.F_max, nlt.F_max),
                      rel(lin0.t_contact, nlt.t_contact)});
-  const oracles::LinearModelInput damped = oracles::linear_model_input(scene, p);
-  if (!oracles::linearized_law_defined(damped)) return out;
-  out.zeta_unload = oracles::solve_linear_model(damped).zeta_unload;
+  const closed_forms::LinearModelInput damped = closed_forms::linear_model_input(scene, p);
+  if (!closed_forms::linearized_law_defined(damped)) return out;
+  out.zeta_unload = closed_forms::solve_linear_model(damped).zeta_unload;
   out.defined = true;
   out.estimate = growth * out.D0;
   return out;
@@ -199,7 +201,7 @@ ModelDecision decide_model(const ValidatedRequest& v, bool trajectory_wanted) {
     d.route = ModelRoute::hunt_crossley_lambert_w;
   } else if (req.law == LawKind::linearized) {
     // its own closed form is exact for it; where the law is undefined the integrator says so
-    if (oracles::linearized_law_defined(oracles::linear_model_input(req.scene, p))) {
+    if (closed_forms::linearized_law_defined(closed_forms::linear_model_input(req.scene, p))) {
       d.route = ModelRoute::linearized_closed_form;
       d.estimated_error = kEstimateClosedForm;
     }
@@ -224,20 +226,22 @@ ImpactResult run_route(const ValidatedRequest& v, const ModelDecision& d,
   const Scene& s = req.scene;
   switch (d.route) {
     case ModelRoute::closed_form_elastoplastic: {
-      ImpactResult r = undamped_result(s, p,
-                                       undamped_elastoplastic(p.effective_mass, p.K_h, p.z_y,
-                                                              s.velocity, true, req.options.rtol));
+      ImpactResult r = undamped_result(
+          s, p,
+          closed_forms::undamped_elastoplastic(p.effective_mass, p.K_h, p.z_y, s.velocity,
+                                               closed_forms::TimesQuadrature{req.options.rtol}));
       check_closed_form(r, s, p, req.options, "closed-form elastoplastic");
       return r;
     }
     case ModelRoute::closed_form_hertz: {
-      ImpactResult r = undamped_result(s, p, undamped_hertz(p.effective_mass, p.K_h, s.velocity));
+      ImpactResult r =
+          undamped_result(s, p, closed_forms::undamped_hertz(p.effective_mass, p.K_h, s.velocity));
       check_closed_form(r, s, p, req.options, "closed-form hertz");
       return r;
     }
     case ModelRoute::linearized_closed_form: {
-      const oracles::LinearModelInput in = oracles::linear_model_input(s, p);
-      ImpactResult r = linear_result(s, p, in, oracles::solve_linear_model(in));
+      const closed_forms::LinearModelInput in = closed_forms::linear_model_input(s, p);
+      ImpactResult r = linear_result(s, p, in, closed_forms::solve_linear_model(in));
       check_closed_form(r, s, p, req.options, "linearized closed form");
       return r;
     }
@@ -245,7 +249,7 @@ ImpactResult run_route(const ValidatedRequest& v, const ModelDecision& d,
       ImpactResult r = detail::simulate_full(v, d.integrator, trajectory);
       if (!r.separated()) return r;
       const HuntCrossleyLaw law = HuntCrossleyLaw::make(req.parameters, p);
-      const double e = oracles::hunt_crossley_cor(law.mu * s.velocity);
+      const double e = closed_forms::hunt_crossley_cor(law.mu * s.velocity);
       r.e = e;
       r.rebound_velocity = -e * s.velocity;
       const BodyVelocities bodies = body_velocities_after(s, r.rebound_velocity);

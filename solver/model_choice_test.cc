@@ -28,8 +28,8 @@ TEST(ModelChoice, LinearDifferenceFloorHoldsFromYieldToHighVelocity) {
     ASSERT_TRUE(nl.yielded) << x;
     double g2 = 0.0;
     try {
-      g2 = oracles::linear_gamma_squared_eq20(p.effective_mass, p.K_h, p.K_y, v0);
-    } catch (const oracles::LinearizedLawUndefined&) {
+      g2 = closed_forms::linear_gamma_squared_eq20(p.effective_mass, p.K_h, p.K_y, v0);
+    } catch (const closed_forms::LinearizedLawUndefined&) {
       continue;  // below z_m = 2.25 z_y: no linearized route at all
     }
     const double scaled = std::abs(std::sqrt(g2) - nl.e) / nl.e * std::sqrt(x);

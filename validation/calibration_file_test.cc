@@ -35,8 +35,9 @@ Damping plate() {
 // (the file describes the same model), and the prediction must be finite.
 void expect_round_trip(const SimulationRequest& truth, const std::string& name) {
   SCOPED_TRACE(name);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.4, 4, 5), 0.01, true, true, 3, name});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.4, 4, 5), .u_e = 0.01, .seed = 3, .description = name});
   CalibrationProblem problem{truth, data};
   set_parameter(problem.request, name, 1.2 * parameter_value(truth, name));
   CalibrationOptions o;

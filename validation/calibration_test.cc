@@ -31,8 +31,11 @@ SimulationRequest paper(double zeta) {
 // the recovery case, verification/cases_validation.cc): 1e-3 SE leaves a factor 20.
 TEST(Calibration, RecoversYieldStrengthFromNoiseFreeData) {
   const SimulationRequest truth = paper(0.0);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.5, 5, 20), 0.01, false, true, 1, "test"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = log_velocities(0.5, 5, 20),
+                                                   .u_e = 0.01,
+                                                   .noise = false,
+                                                   .seed = 1,
+                                                   .description = "test"});
   CalibrationProblem problem{truth, data};
   set_parameter(problem.request, "yield_strength", 1.3 * *truth.scene.yield_strength);
   const CalibrationResult r = calibrate(problem, fitting({"yield_strength"}));
@@ -50,8 +53,10 @@ TEST(Calibration, RecoversYieldStrengthFromNoiseFreeData) {
 TEST(Calibration, YieldStrengthFromElasticDataIsUnidentifiable) {
   SimulationRequest truth = paper(0.1);
   truth.scene.damping = Damping::coefficient(parameter_value(truth, "c"));
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.01, 0.1, 12), 0.005, true, true, 3, "test"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = log_velocities(0.01, 0.1, 12),
+                                                   .u_e = 0.005,
+                                                   .seed = 3,
+                                                   .description = "test"});
   const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}));
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_FALSE(r.find("yield_strength")->identifiable) << r.brief();
@@ -76,8 +81,9 @@ SimulationRequest hunt_crossley(double mu) {
 // convergence (parameter_tolerance 1e-10) with room for the central differences.
 TEST(Calibration, AParameterWithoutEffectLeavesTheOthersDetermined) {
   const SimulationRequest truth = hunt_crossley(1.5);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.3, 3, 10), 0.005, true, true, 11, "test"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.3, 3, 10), .u_e = 0.005, .seed = 11, .description = "test"});
   CalibrationProblem problem{hunt_crossley(0.5), data};
   const CalibrationResult alone = calibrate(problem, fitting({"mu"}));
   const CalibrationResult both = calibrate(problem, fitting({"mu", "K"}));
@@ -98,8 +104,9 @@ TEST(Calibration, DampingOfAHertzLawIsDeterminedBesideAYieldStrengthWithoutEffec
   SimulationRequest truth = paper(0.0);
   truth.law = LawKind::hertz;
   truth.scene.damping = Damping::coefficient(11440);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.3, 3, 8), 0.01, true, true, 5, "test"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.3, 3, 8), .u_e = 0.01, .seed = 5, .description = "test"});
   SimulationRequest start = truth;
   start.scene.damping = Damping::coefficient(8000);
   const CalibrationResult r = calibrate({start, data}, fitting({"c", "yield_strength"}));
@@ -114,7 +121,11 @@ TEST(Calibration, DampingOfAHertzLawIsDeterminedBesideAYieldStrengthWithoutEffec
 // undefined, and so is every interval; the fit says so instead of a zero-width interval.
 TEST(Calibration, EstimatedNoiseWithoutDegreesOfFreedomIsNoInterval) {
   const SimulationRequest truth = paper(0.1);
-  const MeasuredData data = synthetic_data(truth, {{0.3, 3.0}, 0.01, true, false, 2, "test"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = {0.3, 3.0},
+                                                   .u_e = 0.01,
+                                                   .state_uncertainty = false,
+                                                   .seed = 2,
+                                                   .description = "test"});
   const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}));
   EXPECT_FALSE(r.ok) << r.brief();
   EXPECT_NE(r.failure.find("undefined"), std::string::npos) << r.failure;
@@ -125,7 +136,8 @@ TEST(Calibration, EstimatedNoiseWithoutDegreesOfFreedomIsNoInterval) {
 // the text does not claim the noise was estimated.
 TEST(Calibration, StatedNoiseWithoutDegreesOfFreedomSaysSo) {
   const SimulationRequest truth = paper(0.1);
-  const MeasuredData data = synthetic_data(truth, {{0.3, 3.0}, 0.01, true, true, 2, "test"});
+  const MeasuredData data = synthetic_data(
+      truth, {.velocities = {0.3, 3.0}, .u_e = 0.01, .seed = 2, .description = "test"});
   const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}));
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(r.dof, 0);
@@ -139,8 +151,9 @@ TEST(Calibration, StatedNoiseWithoutDegreesOfFreedomSaysSo) {
 // never an estimate: here the scan was asked for, so there is no second start to try.
 TEST(Calibration, AFitThatDidNotConvergeIsNoEstimate) {
   const SimulationRequest truth = paper(0.0);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.5, 5, 8), 0.01, true, true, 1, "test"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.5, 5, 8), .u_e = 0.01, .seed = 1, .description = "test"});
   CalibrationProblem problem{truth, data};
   set_parameter(problem.request, "yield_strength", 5 * *truth.scene.yield_strength);
   CalibrationOptions o = fitting({"yield_strength"});
@@ -160,8 +173,9 @@ TEST(Calibration, AFitThatDidNotConvergeStartsAgainFromTheScan) {
   SimulationRequest truth = paper(0.0);
   truth.law = LawKind::hertz;
   truth.scene.damping = Damping::coefficient(11440);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.3, 5, 25), 0.01, true, true, 26, "test"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.3, 5, 25), .u_e = 0.01, .seed = 26, .description = "test"});
   SimulationRequest start = truth;
   start.law = LawKind::elastoplastic;
   CalibrationOptions o = fitting({"c", "yield_strength"});
@@ -213,8 +227,9 @@ TEST(Calibration, ACapturedStartMovesToTheScan) {
 TEST(Calibration, ADashpotWithoutAStartIsStartedFromAScan) {
   SimulationRequest truth = paper(0.0);
   truth.scene.damping = Damping::coefficient(11440);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.3, 4, 8), 0.01, true, true, 4, "test"});
+  const MeasuredData data = synthetic_data(
+      truth,
+      {.velocities = log_velocities(0.3, 4, 8), .u_e = 0.01, .seed = 4, .description = "test"});
   CalibrationOptions o = fitting({"yield_strength", "c"});
   o.profile = false;
   const CalibrationResult r = calibrate({paper(0.0), data}, o);
@@ -227,7 +242,11 @@ TEST(Calibration, ADashpotWithoutAStartIsStartedFromAScan) {
 
 TEST(Calibration, WithoutStatedUncertaintyTheNoiseIsEstimated) {
   const SimulationRequest truth = paper(0.1);
-  SyntheticSpec spec{log_velocities(0.5, 5, 25), 0.01, true, false, 7, "test"};
+  SyntheticSpec spec{.velocities = log_velocities(0.5, 5, 25),
+                     .u_e = 0.01,
+                     .state_uncertainty = false,
+                     .seed = 7,
+                     .description = "test"};
   const CalibrationResult r =
       calibrate({truth, synthetic_data(truth, spec)}, fitting({"yield_strength"}));
   ASSERT_TRUE(r.ok) << r.failure;
@@ -239,8 +258,11 @@ TEST(Calibration, WithoutStatedUncertaintyTheNoiseIsEstimated) {
 
 TEST(Calibration, BadOptionsAreBadInput) {
   const SimulationRequest truth = paper(0.0);
-  const MeasuredData data =
-      synthetic_data(truth, {log_velocities(0.5, 5, 5), 0.01, false, true, 1, "test"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = log_velocities(0.5, 5, 5),
+                                                   .u_e = 0.01,
+                                                   .noise = false,
+                                                   .seed = 1,
+                                                   .description = "test"});
   EXPECT_THROW(calibrate({truth, data}, fitting({"nonsense"})), InputError);
   CalibrationOptions o = fitting({"yield_strength"});
   o.bounds["yield_strength"] = {1e9, 2e9};  // start 2.02e8 outside

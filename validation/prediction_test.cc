@@ -28,8 +28,10 @@ struct Fitted {
 const Fitted& fitted() {
   static const Fitted f = [] {
     const SimulationRequest truth = undamped_paper();
-    Fitted x{{truth, synthetic_data(truth, {log_velocities(0.5, 5, 15), 0.01, true, true, 21,
-                                            "prediction test"})},
+    Fitted x{{truth, synthetic_data(truth, {.velocities = log_velocities(0.5, 5, 15),
+                                            .u_e = 0.01,
+                                            .seed = 21,
+                                            .description = "prediction test"})},
              {}};
     CalibrationOptions o;
     o.fit = {"yield_strength"};
@@ -101,14 +103,15 @@ TEST(Prediction, ValidationComparisonFlagsOnlyAWrongModel) {
   PredictionOptions o;
   o.samples = 500;
   const auto v = log_velocities(0.6, 4.5, 10);
-  const MeasuredData same =
-      synthetic_data(undamped_paper(), {v, 0.01, true, true, 99, "held back"});
+  const MeasuredData same = synthetic_data(
+      undamped_paper(), {.velocities = v, .u_e = 0.01, .seed = 99, .description = "held back"});
   const ValidationComparison ok = compare_with_data(m, same, o);
   EXPECT_LE(ok.exceeding, 2) << ok.summary();
   SimulationRequest other = undamped_paper();
   set_parameter(other, "yield_strength", 2 * *other.scene.yield_strength);
-  const ValidationComparison bad =
-      compare_with_data(m, synthetic_data(other, {v, 0.01, true, true, 98, "other"}), o);
+  const ValidationComparison bad = compare_with_data(
+      m, synthetic_data(other, {.velocities = v, .u_e = 0.01, .seed = 98, .description = "other"}),
+      o);
   EXPECT_EQ(bad.exceeding, 10) << bad.summary();
   for (const auto& p : bad.points)
     EXPECT_NEAR(p.u_val, std::sqrt(p.u_num * p.u_num + p.u_input * p.u_input + p.u_D * p.u_D),

@@ -74,7 +74,8 @@ Outcome linearized(IntegratorKind k) {
         w.fail(where + ": " + r.reason);
         continue;
       }
-      const auto x = oracles::solve_linear_model(oracles::linear_model_input(s, derive(s)));
+      const auto x =
+          closed_forms::solve_linear_model(closed_forms::linear_model_input(s, derive(s)));
       w.add_cor(r.e, x.e, where + " e");
       w.add(r.F_max, x.F_max, where + " F_max");
       w.add(r.z_max, x.z_max, where + " z_max");
@@ -98,7 +99,7 @@ Outcome hunt_crossley(IntegratorKind k) {
       w.fail(where + ": " + r.reason);
       continue;
     }
-    const auto x = oracles::solve_hunt_crossley({p.K_h, u0 / s.velocity, s.mass, s.velocity});
+    const auto x = closed_forms::solve_hunt_crossley({p.K_h, u0 / s.velocity, s.mass, s.velocity});
     w.add_cor(r.e, x.e, where + " e");
     w.add(r.z_max, x.x_max, where + " alpha_max");
   }
@@ -110,19 +111,19 @@ Outcome hunt_crossley(IntegratorKind k) {
 void register_analytic_cases(Registry& reg) {
   for (IntegratorKind k : all_integrators()) {
     const Tolerance tol = default_settings_tolerance(k);
-    const bool slow = k == IntegratorKind::mp50;
+    const Cost cost = k == IntegratorKind::mp50 ? Cost::slow : Cost::quick;
     reg.add({"analytic.hertz-undamped." + name(k),
              "Hertz impact without dashpot vs closed form (" + name(k) + ")", Tier::analytic,
-             tol.reason, slow, [k] { return hertz_undamped(k); }});
+             tol.reason, cost, [k] { return hertz_undamped(k); }});
     reg.add({"analytic.elastoplastic-undamped." + name(k),
              "Undamped elastoplastic impact vs energy closed form (" + name(k) + ")",
-             Tier::analytic, tol.reason, slow, [k] { return elastoplastic_undamped(k); }});
+             Tier::analytic, tol.reason, cost, [k] { return elastoplastic_undamped(k); }});
     reg.add({"analytic.linearized." + name(k),
              "Linearized law, zeta 0-0.3, vs closed form of eqs 22-25 (" + name(k) + ")",
-             Tier::analytic, tol.reason, slow, [k] { return linearized(k); }});
+             Tier::analytic, tol.reason, cost, [k] { return linearized(k); }});
     reg.add({"analytic.hunt-crossley." + name(k),
              "Hunt-Crossley COR and indentation vs Lambert-W closed form (" + name(k) + ")",
-             Tier::analytic, tol.reason, slow, [k] { return hunt_crossley(k); }});
+             Tier::analytic, tol.reason, cost, [k] { return hunt_crossley(k); }});
   }
 }
 

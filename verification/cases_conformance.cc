@@ -112,7 +112,7 @@ void register_conformance_cases(Registry& reg) {
              Tier::cross_implementation,
              "each check carries its own tolerance and reason (verification/conformance.h); the "
              "case counts the checks that failed, and a law of the registry may fail none",
-             false, [kind] { return passes_every_check(builtin(kind)); }});
+             Cost::quick, [kind] { return passes_every_check(builtin(kind)); }});
   }
   reg.add({"conformance.walton-braun",
            "Walton-Braun (k1 z, then k2 (z - z0)) passes every check over zeta = 0 to 10 and "
@@ -121,7 +121,7 @@ void register_conformance_cases(Registry& reg) {
            "every check carries its own tolerance; at zeta = 1 and 10 every run is captured, "
            "and the integrators are compared on e = 0 within the capture bound, not on the "
            "moment a capture criterion was met",
-           false, [] { return passes_every_check(walton_braun()); }});
+           Cost::quick, [] { return passes_every_check(walton_braun()); }});
   reg.add({"conformance.jump.located",
            "An undeclared jump of the force (Hertz to 1.5 Hertz at z1 = 0.2 mm) fails "
            "static.continuity, located at z1 with its one-sided values",
@@ -129,7 +129,7 @@ void register_conformance_cases(Registry& reg) {
            "the one-sided values are K_h z^{3/2} and 1.5 K_h z^{3/2} at the located z (a "
            "bracket of adjacent doubles); within 1e-12 of their values at z1 they place z "
            "within 7e-13 z1 of z1 (dF/F = 1.5 dz/z), and 1e-12 is the scan's rounding allowance",
-           false, [] {
+           Cost::quick, [] {
              const auto& r = jump();
              const conformance::Check* c = r.find("static.continuity");
              if (!c) return at_most(NAN, 0, "static.continuity did not run: " + r.brief());

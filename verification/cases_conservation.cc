@@ -118,8 +118,8 @@ Outcome captured_end_state(IntegratorKind k) {
     if (scene.velocity < 5.0) continue;  // its domain: z_m >= 2.25 z_y
     const SimulationRequest lin = request(scene, LawKind::linearized, k);
     const DerivedParameters p = derive(scene);
-    const oracles::LinearModelInput in = oracles::linear_model_input(scene, p);
-    const oracles::LinearImpact L = oracles::solve_linear_model(in);
+    const closed_forms::LinearModelInput in = closed_forms::linear_model_input(scene, p);
+    const closed_forms::LinearImpact L = closed_forms::solve_linear_model(in);
     ImpactResult closed;
     closed.z_perm = L.z_perm;
     closed.alpha_max = L.alpha_max;
@@ -158,25 +158,25 @@ void register_conservation_cases(Registry& reg) {
              Tier::conservation,
              std::string(default_settings_tolerance(k).reason) +
                  "; the exact parts (m* v0, m* v0/c, the common velocity) to round-off, 1e-14",
-             false, [k] { return captured_end_state(k); }});
+             Cost::quick, [k] { return captured_end_state(k); }});
   }
   for (IntegratorKind k : all_integrators()) {
     const Tolerance tol = conservation_tolerance(k);
     const std::string n(to_string(k));
-    const bool slow = k == IntegratorKind::mp50;
+    const Cost cost = k == IntegratorKind::mp50 ? Cost::slow : Cost::quick;
     reg.add({"conservation.energy-ledger." + n,
              "Energy ledger 1/2 m v0^2 = 1/2 m v_f^2 + W_p + W_v closes (" + n + ")",
-             Tier::conservation, tol.reason, slow,
+             Tier::conservation, tol.reason, cost,
              [k, tol] { return conservation(k, Check::ledger, tol.value); }});
     reg.add({"conservation.impulse." + n, "Impulse equals m v0 (1 + e) (" + n + ")",
              Tier::conservation,
              std::string(tol.reason) +
                  "; for Runge-Kutta methods the impulse is a linear invariant and holds to "
                  "round-off, so this mainly checks event bookkeeping",
-             slow, [k, tol] { return conservation(k, Check::impulse, tol.value); }});
+             cost, [k, tol] { return conservation(k, Check::impulse, tol.value); }});
     reg.add({"conservation.cor-definitions." + n,
              "Newton, Poisson and energetic COR agree (" + n + ")", Tier::conservation, tol.reason,
-             slow, [k, tol] { return conservation(k, Check::cor_definitions, tol.value); }});
+             cost, [k, tol] { return conservation(k, Check::cor_definitions, tol.value); }});
   }
 }
 

@@ -12,7 +12,7 @@
 // its order on problems with known solutions.
 //
 // Problem: the linearized law at 1 m/s with zeta = 0.1 (paper scene), whose COR is known in
-// closed form (oracles::solve_linear_model, eqs 22-25) and whose right-hand side is smooth
+// closed form (closed_forms::solve_linear_model, eqs 22-25) and whose right-hand side is smooth
 // within each phase, so the only obstacle to the methods' classical orders is the switch at
 // maximum compression. (With damping the COR carries the methods' full error; without it e is
 // the amplitude of an undamped oscillator, on which RK4's amplitude error is O(h^5): order 5.)
@@ -102,8 +102,8 @@ Outcome generic_order_case(IntegratorKind k) {
 // study the report's convergence figure draws).
 Outcome step_ends_case(IntegratorKind k) {
   const FixedStepConvergenceStudy& st = fixed_step_convergence_study();
-  const ConvergenceStudy& located = st.of(k, true);
-  const ConvergenceStudy& naive = st.of(k, false);
+  const ConvergenceStudy& located = st.of(k, EventLocation::located);
+  const ConvergenceStudy& naive = st.of(k, EventLocation::at_step_ends);
   std::string errors;
   for (double e : naive.errors_e) errors += (errors.empty() ? "" : ", ") + fmt(e, 3);
   Outcome o = at_most(
@@ -372,7 +372,7 @@ void register_convergence_cases(Registry& reg) {
              Tier::cross_implementation,
              "the choice states estimated_error = 200 rtol for dop853, 300 rtol for "
              "rodas4 (solver/integrator_choice.h); it must hold",
-             false, [rtol] { return auto_choice_case(rtol); }});
+             Cost::quick, [rtol] { return auto_choice_case(rtol); }});
   }
   for (IntegratorKind k : production_integrators()) {
     const IntegratorTraits& t = traits(k);
@@ -385,7 +385,7 @@ void register_convergence_cases(Registry& reg) {
                  fmt(order_tolerance(t.order)) +
                  ": the next term of the error expansion over the steps that stay above "
                  "round-off (see order_tolerance)",
-             false, [k] { return generic_order_case(k); }});
+             Cost::quick, [k] { return generic_order_case(k); }});
   }
   reg.add({"onset.series",
            "The onset series the integrators start from agrees with a 50-digit integration from "
@@ -396,7 +396,7 @@ void register_convergence_cases(Registry& reg) {
            "later degrees add at most a fraction max(p, r)/2.6 < 1 of it, hence 2 bounds "
            "(solver/onset_series.h); the reference is Richardson-extrapolated RK4 in q = "
            "tau^{1/2} in 50 digits",
-           false, onset_series_case});
+           Cost::quick, onset_series_case});
   reg.add({"autochoice.model",
            "--model auto stays within its stated error, and never states more than the full "
            "model would",
@@ -404,7 +404,7 @@ void register_convergence_cases(Registry& reg) {
            "each route states its error (closed forms 1e-14 or the quadrature's estimate, the "
            "linearized route 2 (1 + 10 zeta) D0, integrated routes 200 or 300 rtol: "
            "solver/model_choice.h); the case holds it to that statement against mp50",
-           false, model_auto_case});
+           Cost::quick, model_auto_case});
   reg.add({"convergence.work-precision",
            "Every adaptive integrator meets its accumulated tolerance bound at every rtol of the "
            "work-precision studies (paper and stiff scenes)",
@@ -412,18 +412,18 @@ void register_convergence_cases(Registry& reg) {
            "the error of e after N steps is at most 20 N (atol + 2 rtol) in units of v0: local "
            "errors per step bounded by the controller, 2 components, a factor 10 for asymptotic "
            "error estimators, linear accumulation (solver/consistency.h)",
-           false, work_precision_case});
+           Cost::quick, work_precision_case});
   reg.add({"convergence.rk4.events-at-step-ends",
            "rk4 with events noticed only at step ends collapses to order ~2", Tier::convergence,
            "switching at the first step end past dz/dt = 0 takes z_m short by up to |z''| h^2/2, "
            "an O(h^2) error in the unloading branch, so e cannot converge faster than order 2 "
            "(plus 0.5 for pre-asymptotic noise)",
-           false, [] { return step_ends_case(IntegratorKind::rk4); }});
+           Cost::quick, [] { return step_ends_case(IntegratorKind::rk4); }});
   reg.add({"convergence.dp45.events-at-step-ends",
            "dp45 with events noticed only at step ends collapses to order ~2", Tier::convergence,
            "as for rk4: the O(h^2) error of a late switch dominates the fifth-order truncation "
            "error",
-           false, [] { return step_ends_case(IntegratorKind::dp45); }});
+           Cost::quick, [] { return step_ends_case(IntegratorKind::dp45); }});
 }
 
 }  // namespace ivv::verification

@@ -74,7 +74,7 @@ void register_cross_implementation_cases(Registry& reg) {
       reg.add({id,
                std::string(to_string(law)) + " law on the paper grid (v0 0.1-5 m/s, zeta 0-0.3): " +
                    std::string(to_string(k)) + " vs the 50-digit reference",
-               Tier::cross_implementation, tol.reason, false, [law, k, tol] {
+               Tier::cross_implementation, tol.reason, Cost::quick, [law, k, tol] {
                  const LawGrid g = grid_for(law);
                  return against_reference(g.requests, g.labels, k, tol.value);
                }});
@@ -86,7 +86,7 @@ void register_cross_implementation_cases(Registry& reg) {
         {"cross.extended-scenes." + std::string(to_string(k)),
          "Every law on other material pairs and masses 1e-3-10 kg: " + std::string(to_string(k)) +
              " vs the 50-digit reference",
-         Tier::cross_implementation, tol.reason, true, [k, tol] {
+         Tier::cross_implementation, tol.reason, Cost::slow, [k, tol] {
            std::vector<SimulationRequest> reqs;
            std::vector<std::string> labels;
            for (const GridScene& gs : extended_grid()) {
@@ -96,10 +96,11 @@ void register_cross_implementation_cases(Registry& reg) {
              }
              // the linearized law only where its closed form says it is defined
              try {
-               oracles::solve_linear_model(oracles::linear_model_input(gs.scene, derive(gs.scene)));
+               closed_forms::solve_linear_model(
+                   closed_forms::linear_model_input(gs.scene, derive(gs.scene)));
                reqs.push_back(request(gs.scene, LawKind::linearized, k));
                labels.push_back("linearized " + gs.label);
-             } catch (const oracles::LinearizedLawUndefined&) {
+             } catch (const closed_forms::LinearizedLawUndefined&) {
              }
              // Hunt-Crossley (no dashpot) with mu v0 = 1
              reqs.push_back(request(gs.scene, LawKind::hunt_crossley, k, 1.0 / gs.scene.velocity));

@@ -133,7 +133,7 @@ void register_dem_cases(Registry& reg) {
       reg.add({"dem." + std::string(t.scene) + "." + integrator,
                "Chung & Ooi (2011) " + std::string(t.test) + ", " + std::string(t.what) +
                    ": Hertz overlap, force, contact time, e = 1 (" + integrator + ")",
-               Tier::analytic, default_settings_tolerance(k).reason, false,
+               Tier::analytic, default_settings_tolerance(k).reason, Cost::quick,
                [t, k] { return chung_ooi(t, k); }});
     }
   }
@@ -145,7 +145,7 @@ void register_dem_cases(Registry& reg) {
              Tier::published_trend,
              default_settings_tolerance(IntegratorKind::odeint_dopri5).reason +
                  std::string(" (odeint-dopri5, both materials)"),
-             false, [tension] { return chung_ooi_test3(tension); }});
+             Cost::quick, [tension] { return chung_ooi_test3(tension); }});
   }
 }
 

@@ -394,14 +394,18 @@ Outcome growing_plates() {
                  detail + "|e_first - e_inf| at 200 mm over that at 100 mm");
 }
 
+// What the plate does with the modes above the cut-off: their static compliance added to the
+// deflection (residual), or nothing (truncated).
+enum class DroppedModes { residual, truncated };
+
 // The observed order of e in the cut-off (the modes kept grow as the cut-off): from cut-offs
 // 10, 20, 40 on the 200 mm plate, p = log2(|e10 - e20|/|e20 - e40|).
-double observed_order(bool residual) {
+double observed_order(DroppedModes dropped) {
   double e[3];
   for (int k = 0; k < 3; ++k) {
     PlateImpactOptions opt;
     opt.cutoff = 10.0 * (1 << k);
-    opt.residual = residual;
+    opt.residual = dropped == DroppedModes::residual;
     opt.rtol = 1e-12;
     opt.atol = 1e-14;
     const PlateImpactResult r =
@@ -420,29 +424,29 @@ void register_mode_cases(Registry& reg) {
            Tier::analytic,
            "the same number by two arrangements of ~10 floating-point operations: rounding, a "
            "few 1e-16, with room",
-           false, navier_frequencies});
+           Cost::quick, navier_frequencies});
   reg.add({"plate.static.twk-square", "static compliance at the centre of a square plate vs TWK",
            Tier::analytic,
            "TWK print alpha to 4 significant digits: half a unit of the last, 5e-6; the "
            "computed value's own error is below 1e-10 (plate_modes.h)",
-           false, twk_square});
+           Cost::quick, twk_square});
   reg.add({"plate.static.levy-series", "static compliance vs TWK's Levy single series",
            Tier::analytic,
            "both are exact series: the implementation's tail bound is below 1e-10 relative "
            "(plate_modes.h), the Levy sum's tail below 2e-12",
-           false, levy_series});
+           Cost::quick, levy_series});
   reg.add({"plate.static.twk-table", "static compliance vs TWK Table 23, b/a = 1.1 ... 2.0",
            Tier::analytic,
            "the table's entries are not all correct to the 4 digits printed: TWK's own series "
            "differs from them by up to 1.9e-3 relative (b/a = 1.2; plate.static.levy-series "
            "holds the series to 1e-10); 2.5e-3 is that measured accuracy of the table",
-           false, twk_table});
+           Cost::quick, twk_table});
   reg.add({"plate.static.double-sum",
            "static compliance of an orthotropic plate off centre vs the plain double sum",
            Tier::analytic,
            "the double sum over m, n <= 1500 misses terms falling as (m^2 + n^2)^-2: ~3e-7 of "
            "the total, below 2e-6 with the aspect ratio's weight",
-           false, double_sum});
+           Cost::quick, double_sum});
 }
 
 const char* kGci =
@@ -467,19 +471,19 @@ void register_impact_cases(Registry& reg) {
       reg.add({"plate.cross.convolution." + std::string(scenes[i].id) + "." + name,
                std::string(name) + " of the modal ODE vs the convolution oracle: " + scenes[i].what,
                Tier::cross_implementation,
-               count ? "a count: the two implementations must see the same contacts" : kGci, false,
-               [i, q] { return cross_quantity(i, q); }});
+               count ? "a count: the two implementations must see the same contacts" : kGci,
+               Cost::quick, [i, q] { return cross_quantity(i, q); }});
     }
     reg.add({"plate.conservation.ledger." + std::string(scenes[i].id),
              std::string("energy ledger at every event: ") + scenes[i].what, Tier::conservation,
              "each check sums terms integrated at rtol 1e-10, atol 1e-12 per step over a few "
              "thousand steps: ~1e-8 at most (measured 3e-12 ... 3e-10)",
-             false, [i] { return ledger(i); }});
+             Cost::quick, [i] { return ledger(i); }});
     reg.add({"plate.conservation.final-energy." + std::string(scenes[i].id),
              std::string("final kinetic + plate + plastic energy = initial: ") + scenes[i].what,
              Tier::conservation,
-             "the ledger at the last separation, the free flight exact: as the ledger, 1e-8", false,
-             [i] { return final_energy(i); }});
+             "the ledger at the last separation, the free flight exact: as the ledger, 1e-8",
+             Cost::quick, [i] { return final_energy(i); }});
   }
 }
 
@@ -491,27 +495,27 @@ void register_limit_cases(Registry& reg) {
       "than that in e and F_max (measured 2e-7 and 5e-7)";
   reg.add({"plate.infinite-limit.hertz.e-first",
            "a 200 mm plate reproduces the infinite plate's dashpot (Zener): e", Tier::analytic,
-           limit_reason, false, [] { return infinite_limit_e(LawKind::hertz, 0.0); }});
+           limit_reason, Cost::quick, [] { return infinite_limit_e(LawKind::hertz, 0.0); }});
   reg.add({"plate.infinite-limit.hertz.F-max",
            "a 200 mm plate reproduces the infinite plate's dashpot (Zener): F_max", Tier::analytic,
-           limit_reason, false, infinite_limit_force});
+           limit_reason, Cost::quick, infinite_limit_force});
   reg.add({"plate.infinite-limit.hertz.t-contact",
            "a 400 mm plate reproduces the infinite plate's dashpot (Zener): t_contact",
            Tier::analytic,
            "the 1e-5 asked of the infinite-plate limit; on the 200 mm plate the early return of "
            "the fastest Kirchhoff waves "
            "moves the end of contact by 5e-5 (see the case's source), so the plate is 400 mm",
-           false, infinite_limit_contact_time});
+           Cost::quick, infinite_limit_contact_time});
   reg.add({"plate.infinite-limit.hertz.growing-plates",
            "e_first on growing plates approaches the infinite plate's", Tier::convergence,
            "Kirchhoff bending waves are dispersive (c_g ~ sqrt(omega)): on the 100 mm plate the "
            "contact's frequency returns after 2.3 t_c but the faster components within it, and "
            "e_first is 3e-4 off; at 200 mm (4.7 t_c) what remains is about the truncation's "
            "1e-6: the gap must fall monotonically and by at least ten (measured 3e-3)",
-           false, growing_plates});
+           Cost::quick, growing_plates});
   reg.add({"plate.infinite-limit.elastoplastic.e-first",
            "a 200 mm plate reproduces the infinite plate's dashpot: e, elastoplastic, S_y = 1 GPa",
-           Tier::analytic, limit_reason, false,
+           Tier::analytic, limit_reason, Cost::quick,
            [] { return infinite_limit_e(LawKind::elastoplastic, kHardSteel); }});
   reg.add({"plate.quasi-static.approach",
            "a heavy striker on the coupon approaches the two-spring model as 1/m",
@@ -519,7 +523,7 @@ void register_limit_cases(Registry& reg) {
            "at fixed impact energy the plate's inertia enters as (omega_contact/omega_11)^2, "
            "proportional to 1/m: order 1 in the mass (measured 1.02 from 55 to 550 kg and 0.84 "
            "from 5.5 to 55 kg); 0.8 tells that from a plateau",
-           false, [] {
+           Cost::quick, [] {
              std::string detail;
              const double p = quasi_static_order(&detail);
              return at_least(p, 0.8, detail + "observed order in 1/m: " + fmt(p, 4));
@@ -529,8 +533,8 @@ void register_limit_cases(Registry& reg) {
            "with the static compliance of the dropped modes the error falls about as cut-off^-3 "
            "(measured 2.9 to 3.0); without it as cut-off^-1 (plate.convergence.truncated): an "
            "order of at least 2 tells the two apart",
-           false, [] {
-             const double p = observed_order(true);
+           Cost::quick, [] {
+             const double p = observed_order(DroppedModes::residual);
              return at_least(p, 2.0, "observed order from cut-offs 10, 20, 40: " + fmt(p, 4));
            }});
   reg.add({"plate.convergence.truncated",
@@ -538,8 +542,8 @@ void register_limit_cases(Registry& reg) {
            "plain truncation leaves the dropped modes' compliance ~ 1/cut-off out of the spring "
            "(plate_modes_test: C_res ~ 2/(pi c omega_cut)): order about 1 (measured 1.1); 1.5 "
            "is halfway to the residual's",
-           false, [] {
-             const double p = observed_order(false);
+           Cost::quick, [] {
+             const double p = observed_order(DroppedModes::truncated);
              return at_most(p, 1.5, "observed order from cut-offs 10, 20, 40: " + fmt(p, 4));
            }});
 }

@@ -90,7 +90,7 @@ Outcome yield_edge(IntegratorKind k) {
 // form). The run must end "captured" with e = 0 and F_max as the closed form, in bounded steps.
 Outcome capture(IntegratorKind k) {
   const Scene s = with(paper_scene(), 50.0, 0.6);
-  const auto x = oracles::solve_linear_model(oracles::linear_model_input(s, derive(s)));
+  const auto x = closed_forms::solve_linear_model(closed_forms::linear_model_input(s, derive(s)));
   if (!x.captured) return at_most(INFINITY, 0, "the chosen scene is not a capture in closed form");
   const ImpactResult r = simulate(request(s, LawKind::linearized, k));
   WorstError w;
@@ -288,30 +288,30 @@ void register_stability_cases(Registry& reg) {
     const Tolerance tol = default_settings_tolerance(k);
     const std::string n = name(k);
     reg.add({"stability.grazing-1e-6." + n, "Grazing impact v0 = 1e-6 m/s (" + n + ")",
-             Tier::stability, tol.reason, false, [k] { return velocity_extremes(k, 1e-6); }});
+             Tier::stability, tol.reason, Cost::quick, [k] { return velocity_extremes(k, 1e-6); }});
     reg.add({"stability.fast-100." + n, "Fast impact v0 = 100 m/s (" + n + ")", Tier::stability,
-             tol.reason, false, [k] { return velocity_extremes(k, 100.0); }});
+             tol.reason, Cost::quick, [k] { return velocity_extremes(k, 100.0); }});
     reg.add({"stability.yield-edge." + n,
              "Maximum compression 1e-9 above and below the yield kink (" + n + ")", Tier::stability,
-             tol.reason, false, [k] { return yield_edge(k); }});
+             tol.reason, Cost::quick, [k] { return yield_edge(k); }});
     reg.add({"stability.capture." + n, "Capture (no rebound) ends with e = 0 (" + n + ")",
-             Tier::stability, tol.reason, false, [k] { return capture(k); }});
+             Tier::stability, tol.reason, Cost::quick, [k] { return capture(k); }});
     reg.add({"stability.mass-extremes." + n, "Masses 1e-6 and 1e3 kg (" + n + ")", Tier::stability,
-             tol.reason, false, [k] { return mass_extremes(k); }});
+             tol.reason, Cost::quick, [k] { return mass_extremes(k); }});
     if (implicit(k)) {
       reg.add({"stability.stiff-dashpot." + n,
                "Weak dashpot zeta = 1 to 1000 (stiff): implicit integrator meets its tolerance (" +
                    n + ")",
                Tier::stability,
                std::string(tol.reason) + "; two integrators each within it agree within twice it",
-               false, [k] { return stiff_implicit(k); }});
+               Cost::quick, [k] { return stiff_implicit(k); }});
     } else {
       reg.add(
           {"stability.stiff-dashpot." + n,
            "zeta = 1000: explicit integrator meets its tolerance or reports failure (" + n + ")",
            Tier::stability,
-           std::string(tol.reason) + "; against rosenbrock4, itself within it: twice it", false,
-           [k] { return stiff_explicit(k); }});
+           std::string(tol.reason) + "; against rosenbrock4, itself within it: twice it",
+           Cost::quick, [k] { return stiff_explicit(k); }});
     }
   }
   reg.add({"stability.hard-cases.named-or-within-tolerance",
@@ -319,17 +319,17 @@ void register_stability_cases(Registry& reg) {
            Tier::stability,
            "each integrator's default-settings tolerance (tolerances.h) against the independent "
            "e; a failure passes only with its reason, never a silently wrong COR",
-           false, hard_cases});
+           Cost::quick, hard_cases});
   reg.add({"stability.exact-capture-region",
            "Capture decided by the invariant region: integrated on, no rebound beyond the error",
            Tier::stability,
            "the rebound of a run integrated through the creep is zero up to its integration "
            "error, bounded by 20 N (atol + 2 rtol) (consistency.h)",
-           false, exact_capture_region});
+           Cost::quick, exact_capture_region});
   reg.add({"stability.linearized-outside-domain",
            "Linearized law below z_m = 2.25 z_y: every integrator stops with a clear error",
            Tier::stability, "all of them must say so: a NaN or a number would be silently wrong",
-           false, [] { return linearized_outside_domain(); }});
+           Cost::quick, [] { return linearized_outside_domain(); }});
 }
 
 }  // namespace ivv::verification

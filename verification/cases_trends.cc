@@ -132,8 +132,11 @@ Plot cor_map_plot(const CorMapStudy& m) {
   return p;
 }
 
-// Smallest relative decrement between neighbours along zeta (by_zeta) or along v0.
-Outcome monotone(bool by_zeta) {
+enum class Along { zeta, velocity };
+
+// Smallest relative decrement between neighbours along zeta or along v0.
+Outcome monotone(Along along) {
+  const bool by_zeta = along == Along::zeta;
   const CorMapStudy& m = cor_map_study();
   double smallest = INFINITY;
   std::string where;
@@ -219,7 +222,7 @@ Outcome eq20() {
   WorstError w;
   for (double v0 : {1.0, 3.0, 10.0, 30.0, 100.0}) {
     const ImpactResult r = run(with(base, v0, 0.0), LawKind::linearized);
-    const double g2 = oracles::linear_gamma_squared_eq20(base.mass, p.K_h, p.K_y, v0);
+    const double g2 = closed_forms::linear_gamma_squared_eq20(base.mass, p.K_h, p.K_y, v0);
     w.add_cor(r.e, std::sqrt(g2), "v0=" + fmt(v0));
   }
   return worst_case(w, 1e-9,
@@ -239,7 +242,7 @@ Outcome eq21() {
   std::vector<double> vs, excess, lower;
   for (double v0 : {10.0, 100.0, 1000.0, 1e4}) {
     const ImpactResult r = run(with(base, v0, 0.0), LawKind::linearized);
-    const double g21 = oracles::linear_gamma_squared_eq21(base.mass, p.K_h, p.K_y, v0);
+    const double g21 = closed_forms::linear_gamma_squared_eq21(base.mass, p.K_h, p.K_y, v0);
     const double q = (p.K_y / p.K_h) * std::pow(p.K_y / (base.mass * v0 * v0), 0.25);
     const double dev = r.e * r.e / g21 - 1.0;
     const double lo = q / 6 - 1e-9, hi = q / 6 + 2.0 / 27 * q * q / (1 - q) + 1e-9;
@@ -525,44 +528,46 @@ void register_paper_claim_cases(Registry& reg) {
   const Tier T = Tier::published_trend;
   reg.add({"trend.paper.elastic-at-0.1-plastic-at-1-and-5",
            "Table 1, c = 11440 N s/m: 0.1 m/s is elastic, 1 and 5 m/s are plastic", T,
-           "a sign: z_m/z_y on the right side of 1 at each velocity", false, elastic_and_plastic});
+           "a sign: z_m/z_y on the right side of 1 at each velocity", Cost::quick,
+           elastic_and_plastic});
   reg.add({"trend.paper.linear-close-to-nonlinear",
            "Linear and nonlinear predictions are close at 1 and 5 m/s (Figs 4-7)", T,
            "'close' read as F_max and contact time within 5%: differences the paper's force "
            "histories (Figs 4, 6) would show as visibly separate curves",
-           false, linear_close_to_nonlinear});
+           Cost::quick, linear_close_to_nonlinear});
   reg.add({"trend.paper.displacement-after-force",
            "With damping the maximum displacement comes after the maximum force (z_m < alpha_c)", T,
            "strict order resolved above the event-time precision (1e-12) by a margin of 1e-6",
-           false, displacement_after_force});
+           Cost::quick, displacement_after_force});
   reg.add({"trend.paper.hunt-crossley-fit",
            "Hunt-Crossley fitted for Figs 2-7 reproduces the model's F_max and e", T,
            "the fit solves mu to 2^-34 relative and scales K exactly (fit_hunt_crossley.h); each "
            "of the runs is good to N rtol = 1e-9 at rtol 1e-12: 1e-8",
-           false, hunt_crossley_fit_reproduces});
+           Cost::quick, hunt_crossley_fit_reproduces});
   reg.add({"trend.paper.fig14-cor-falls-with-zeta",
            "Fig. 14: at every v0 of 0.01-10 m/s, e falls with zeta (0-0.5) until capture", T,
            "each fall must exceed twice the error of e, N rtol = 1e-9 in units of v0 at rtol "
            "1e-12 (N < 1000 steps), to be resolved",
-           false, fig14_falls_with_zeta});
+           Cost::quick, fig14_falls_with_zeta});
   reg.add({"trend.paper.fig8-yield-strength",
            "Lower yield strength gives lower F_max and longer contact (Fig. 8)", T,
-           "monotone over four S_y, each step resolved above 1e-6 relative", false,
+           "monotone over four S_y, each step resolved above 1e-6 relative", Cost::quick,
            fig8_yield_strength});
   reg.add({"trend.paper.fig9-mass", "Lower mass gives lower F_max and shorter contact (Fig. 9)", T,
-           "monotone over five masses, each step resolved above 1e-6 relative", false, fig9_mass});
+           "monotone over five masses, each step resolved above 1e-6 relative", Cost::quick,
+           fig9_mass});
   reg.add({"trend.paper.fig12-13-damping",
            "Higher zeta: lower F_max, longer contact, less permanent spring set (Figs 12-13)", T,
-           "monotone over six zeta (0-0.5), each step resolved above 1e-6 relative", false,
+           "monotone over six zeta (0-0.5), each step resolved above 1e-6 relative", Cost::quick,
            fig12_13_damping});
   reg.add({"trend.paper.fig10-11-velocity",
            "Higher v0: shorter normalised contact, more plastic deformation (Figs 10-11)", T,
-           "monotone over four v0, each step resolved above 1e-6 relative", false,
+           "monotone over four v0, each step resolved above 1e-6 relative", Cost::quick,
            fig10_11_velocity});
   reg.add({"trend.paper.hunt-crossley-longer-contact",
            "Hunt-Crossley fitted to the same F_max and e over-predicts contact duration", T,
            "a sign: t_HC/t_model > 1 (and alpha_c larger for the model, Fig. 5) at 1 and 5 m/s",
-           false, hunt_crossley_longer_contact});
+           Cost::quick, hunt_crossley_longer_contact});
 }
 
 }  // namespace
@@ -572,62 +577,62 @@ void register_published_trend_cases(Registry& reg) {
   reg.add({"trend.cor-slope-minus-quarter", "Local slope d ln e/d ln v0 tends to -1/4 (eq. 21)", T,
            "a stated threshold 0.005 on |slope + 1/4| for v0 >= 100 v_y; central differences "
            "over v0 (1 +- 1e-3) have O(h^2) error ~1e-7 and e is accurate to 1e-11",
-           false, slope_limit});
+           Cost::quick, slope_limit});
   reg.add({"trend.cor-slope-near-yield", "The slope is about -0.257 near 15 v_y, not -1/4 yet", T,
            "docs/design.md §3 quotes three digits (-0.257): rounding allows 5e-4, the 0.1% central "
            "difference adds < 1e-7; 1e-3",
-           false, slope_near_yield});
+           Cost::quick, slope_near_yield});
   reg.add({"trend.cor-undamped-simulated-is-closed-form",
            "Undamped elastoplastic COR: simulation equals the closed form by energy, 0.5-1e4 v_y",
            T,
            "dopri5 at rtol 1e-12: global error at most N rtol with N < 1000 steps, 1e-9 in units "
            "of v0",
-           false, undamped_simulated_is_closed_form});
+           Cost::quick, undamped_simulated_is_closed_form});
   reg.add({"trend.cor-slope-simulated-is-closed-form",
            "Local slope d ln e/d ln v0: simulation equals the closed form", T,
            "e to 1e-9 at v0 (1 +- 1e-3) with e >= 0.1 on the grid: the slope's error is at most "
            "2 x 1e-9 / (0.1 x 2e-3) = 1e-5",
-           false, slope_simulated_is_closed_form});
+           Cost::quick, slope_simulated_is_closed_form});
   reg.add({"trend.cor-undamped-asymptote",
            "Undamped COR approaches (15/8)^{1/8} (v0/v_y)^{-1/4} at high v0", T,
            "the first term the asymptote neglects is of relative order (v0/v_y)^{-1/2} "
            "(study_restitution.h): 0.01 at 1e4 v_y",
-           false, undamped_asymptote});
+           Cost::quick, undamped_asymptote});
   reg.add({"trend.cor-falls-with-zeta-to-capture",
            "e falls with zeta at 0.1, 1 and 5 m/s until the first capture (zeta 0.01-10)", T,
            "each fall must exceed twice the error of e, N rtol = 1e-7 in units of v0 at the "
            "default rtol 1e-10 (N < 1000 steps), to be resolved",
-           false, cor_falls_to_capture});
+           Cost::quick, cor_falls_to_capture});
   reg.add({"trend.cor-falls-with-zeta", "e strictly decreasing in zeta at fixed v0 (30 x 10 grid)",
            T,
            "a fall must exceed 1e-6 relative to be resolved: 1e5 times the error of e (rtol 1e-12)",
-           false, [] { return monotone(true); }});
+           Cost::quick, [] { return monotone(Along::zeta); }});
   reg.add({"trend.cor-falls-with-v0",
            "e strictly decreasing in v0 above yield at fixed zeta (30 x 10 grid)", T,
-           "as for zeta: a resolved fall exceeds 1e-6 relative", false,
-           [] { return monotone(false); }});
+           "as for zeta: a resolved fall exceeds 1e-6 relative", Cost::quick,
+           [] { return monotone(Along::velocity); }});
   reg.add({"trend.eq20-linear-cor-is-gamma",
            "Linearized undamped COR equals the plastic loss factor gamma (eq. 20)", T,
-           "dopri5 at rtol 1e-12: global error below 1e-10; 1e-9", false, eq20});
+           "dopri5 at rtol 1e-12: global error below 1e-10; 1e-9", Cost::quick, eq20});
   reg.add({"trend.eq21-high-velocity-limit",
            "e^2 approaches (2/3)(K_y/K_h)(K_y/(m v0^2))^{1/4} at high v0 (eq. 21)", T,
            "the binomial series bounds the neglected terms: between q/6 and q/6 + (2/27) q^2/(1-q)",
-           false, eq21});
+           Cost::quick, eq21});
   register_paper_claim_cases(reg);
   reg.add({"trend.thornton-same-exponent",
            "Model and Thornton (1997) fall with the same exponent -1/4 at high v0", T,
            "Thornton's asymptote 1.185 r^{1/4} and eq. 21 share the exponent: the log-ratio "
            "slope over 100-1e4 v_y must vanish within 0.01 (the model's slope is within 0.005 "
            "of -1/4 there, Thornton's within 0.002)",
-           false, thornton_same_exponent});
+           Cost::quick, thornton_same_exponent});
   reg.add({"trend.thornton-reference-table",
            "Thornton formula reproduces reference_data/thornton_1997.csv", T,
-           "the table is printed to 13 significant digits: 1e-12", false, thornton_table});
-  for (const auto& map : oracles::damping_maps()) {
+           "the table is printed to 13 significant digits: 1e-12", Cost::quick, thornton_table});
+  for (const auto& map : closed_forms::damping_maps()) {
     reg.add({"trend.hunt-crossley-map." + std::string(map.name),
              "The " + std::string(map.name) + " mu(e) map: simulated against the exact delivered e",
-             T, "dopri5 at rtol 1e-12 (error < 1e-10) against 13-digit table values: 1e-9", false,
-             [name = std::string(map.name)] { return damping_map(name); }});
+             T, "dopri5 at rtol 1e-12 (error < 1e-10) against 13-digit table values: 1e-9",
+             Cost::quick, [name = std::string(map.name)] { return damping_map(name); }});
   }
 }
 

@@ -48,8 +48,11 @@ Outcome recovery() {
   const SimulationRequest truth = damped_paper();
   const int n = 20;
   const double u = 0.01;
-  const MeasuredData data =
-      synthetic_data(truth, {plastic_velocities(n), u, false, true, 1, "recovery case"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = plastic_velocities(n),
+                                                   .u_e = u,
+                                                   .noise = false,
+                                                   .seed = 1,
+                                                   .description = "recovery case"});
   CalibrationProblem problem{truth, data};
   set_parameter(problem.request, "c", 1.3 * validation::parameter_value(truth, "c"));
   set_parameter(problem.request, "yield_strength", 0.7 * *truth.scene.yield_strength);
@@ -87,9 +90,10 @@ Outcome coverage(int sets) {
   const int floor = binomial_floor(sets, 0.95, alpha);
   int covered[2] = {0, 0};
   for (int seed = 1; seed <= sets; ++seed) {
-    const MeasuredData data =
-        synthetic_data(truth, {plastic_velocities(20), 0.01, true, true,
-                               static_cast<std::uint64_t>(seed), "coverage case"});
+    const MeasuredData data = synthetic_data(truth, {.velocities = plastic_velocities(20),
+                                                     .u_e = 0.01,
+                                                     .seed = static_cast<std::uint64_t>(seed),
+                                                     .description = "coverage case"});
     const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}, false));
     if (!r.ok) return at_least(NAN, floor, "seed " + std::to_string(seed) + ": " + r.failure);
     for (int j = 0; j < 2; ++j) {
@@ -116,8 +120,10 @@ namespace {
 // the dashpot but not S_y: the case passes when S_y is named unidentifiable and c is not.
 Outcome elastic_data() {
   const SimulationRequest truth = damped_paper();
-  const MeasuredData data = synthetic_data(
-      truth, {log_velocities(0.01, 0.1, 12), 0.005, true, true, 3, "identifiability case"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = log_velocities(0.01, 0.1, 12),
+                                                   .u_e = 0.005,
+                                                   .seed = 3,
+                                                   .description = "identifiability case"});
   const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}));
   if (!r.ok) return at_least(NAN, 1, r.failure);
   const bool right = !r.find("yield_strength")->identifiable && r.find("c")->identifiable &&
@@ -132,8 +138,10 @@ Outcome elastic_data() {
 // determined only in combination: both named unidentifiable, correlation +-1.
 Outcome correlated() {
   const SimulationRequest truth = damped_paper();
-  const MeasuredData data = synthetic_data(
-      truth, {std::vector<double>(10, 1.0), 0.01, true, true, 5, "identifiability case"});
+  const MeasuredData data = synthetic_data(truth, {.velocities = std::vector<double>(10, 1.0),
+                                                   .u_e = 0.01,
+                                                   .seed = 5,
+                                                   .description = "identifiability case"});
   const CalibrationResult r = calibrate({truth, data}, fitting({"c", "yield_strength"}));
   if (!r.ok) return at_least(NAN, 1, r.failure);
   const double rho = std::abs(r.correlation[0][1]);
@@ -178,8 +186,10 @@ struct WrongModel {
 const WrongModel& wrong_model() {
   static const WrongModel w = [] {
     const MeasuredData data =
-        synthetic_data(kuwabara_kono(kKuwabaraKonoA),
-                       {log_velocities(0.01, 10, 25), 0.005, true, true, 11, "wrong-model case"});
+        synthetic_data(kuwabara_kono(kKuwabaraKonoA), {.velocities = log_velocities(0.01, 10, 25),
+                                                       .u_e = 0.005,
+                                                       .seed = 11,
+                                                       .description = "wrong-model case"});
     WrongModel m;
     CalibrationOptions ep = fitting({"c", "yield_strength"}, false);
     ep.scan = true;
@@ -263,9 +273,10 @@ Outcome band_coverage(int sets) {
   std::vector<int> covered(speeds.size());
   for (int seed = 1; seed <= sets; ++seed) {
     const CalibrationProblem problem{
-        damped_paper(), synthetic_data(truth, {plastic_velocities(20), 0.01, true, true,
-                                               static_cast<std::uint64_t>(1000 + seed),
-                                               "band coverage case (GSL rk8pd)"})};
+        damped_paper(), synthetic_data(truth, {.velocities = plastic_velocities(20),
+                                               .u_e = 0.01,
+                                               .seed = static_cast<std::uint64_t>(1000 + seed),
+                                               .description = "band coverage case (GSL rk8pd)"})};
     const CalibrationResult r = calibrate(problem, fitting({"c", "yield_strength"}, false));
     if (!r.ok) return at_least(NAN, floor, "seed " + std::to_string(seed) + ": " + r.failure);
     PredictionOptions o;
@@ -293,46 +304,47 @@ void register_validation_cases(Registry& reg) {
            "Calibration recovers the generating c and S_y from noise-free synthetic data", T,
            "the data and the fit's runs carry at most the stated integration errors; they move "
            "an estimate by at most sqrt(n) x (their size / u_e) standard errors",
-           false, recovery});
+           Cost::quick, recovery});
   reg.add({"validation.calibrate.coverage-100",
            "95 % intervals cover the generating values (100 seeded noisy data sets)", T,
            "binomial: a correct method reaches the floor except with probability <= 0.5 % per "
            "parameter (the seeded sets make the case reproducible; ~10 s, so in the default run)",
-           false, [] { return coverage(100); }});
+           Cost::quick, [] { return coverage(100); }});
   reg.add({"validation.predict.band-coverage-100",
            "calibrate -> predict: 95 % bands cover the generating e (100 data sets from GSL rk8pd)",
            T,
            "binomial: a correct band reaches the floor except with probability <= 0.5 % per "
            "speed; the quantiles of 400 draws add a Monte Carlo error of about 1 % to the "
            "band's coverage, inside the floor's margin",
-           false, [] { return band_coverage(100); }});
+           Cost::quick, [] { return band_coverage(100); }});
   reg.add({"validation.identifiability.elastic",
            "Data all below yield: yield_strength named unidentifiable, c determined", T,
            "unidentifiable means a linearised standard error of ln S_y above 1 (kUnidentifiable); "
            "below yield e does not depend on S_y at all",
-           false, elastic_data});
+           Cost::quick, elastic_data});
   reg.add({"validation.identifiability.correlated",
            "Data at one speed: c and yield_strength named unidentifiable, correlation +-1", T,
-           "identical Jacobian rows: rank 1 exactly, |rho| = 1 to round-off", false, correlated});
+           "identical Jacobian rows: rank 1 exactly, |rho| = 1 to round-off", Cost::quick,
+           correlated});
   reg.add({"validation.wrong-model.chi2",
            "Kuwabara-Kono data fitted by the elastoplastic law fail the chi^2 test", T,
-           "significance 1e-3: a right model fails so with probability 1e-3", false,
+           "significance 1e-3: a right model fails so with probability 1e-3", Cost::quick,
            wrong_model_rejected});
   reg.add({"validation.wrong-model.ranking",
            "Model comparison ranks Kuwabara-Kono first on its own data (AIC)", T,
            "AIC differences: the measured value is the runner-up's Delta AIC (negative when KK is "
            "not first)",
-           false, wrong_model_ranked});
+           Cost::quick, wrong_model_ranked});
   reg.add(
       {"validation.example.recovery",
        "Shipped example (synthetic): the generating c and S_y lie in the printed 95 % intervals", T,
        "the interval itself: |estimate - truth| <= 1.96 SE (fails with P = 5 % per parameter "
        "for a correct method; the shipped data are fixed, so the outcome is too)",
-       false, shipped_recovery});
+       Cost::quick, shipped_recovery});
   reg.add({"validation.example.vv20",
            "Shipped example: the V&V 20 comparison with the held-back points flags at most 2 of 8",
            T, "binomial: 3 or more of 8 points beyond 2 u_val has P = 0.6 % for a right model",
-           false, shipped_validation});
+           Cost::quick, shipped_validation});
 }
 
 }  // namespace ivv::verification

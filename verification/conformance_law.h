@@ -32,8 +32,8 @@ class TypedProbe final : public LawProbe {
     if constexpr (law_supports_scalar<Law, Ad>) {
       // replay the history on the autodiff scalar (z_max a constant), then differentiate
       history_t<Law, Ad> h{};
-      for (int k = 0; k < segments_; ++k) law_.next_segment(h);
-      if (unloading_) law_.begin_unloading(h, Ad(z_max_));
+      for (int k = 0; k < segments_; ++k) law_next_segment(law_, h);
+      if (unloading_) law_begin_unloading(law_, h, Ad(z_max_));
       const Ad dz = law_.force(h, boost::math::differentiation::make_fvar<double, 1>(z), Ad(v));
       const Ad dv = law_.force(h, Ad(z), boost::math::differentiation::make_fvar<double, 1>(v));
       return std::pair{dz.derivative(1), dv.derivative(1)};
@@ -41,13 +41,13 @@ class TypedProbe final : public LawProbe {
       return std::nullopt;
     }
   }
-  std::optional<double> segment_end() const override { return law_.segment_end(h_); }
+  std::optional<double> segment_end() const override { return law_segment_end(law_, h_); }
   void next_segment() override {
-    law_.next_segment(h_);
+    law_next_segment(law_, h_);
     ++segments_;
   }
   void begin_unloading(double z_max) override {
-    law_.begin_unloading(h_, z_max);
+    law_begin_unloading(law_, h_, z_max);
     unloading_ = true;
     z_max_ = z_max;
   }

@@ -144,7 +144,7 @@ const ExampleRun& kelvin_voigt_example() {
 
 const ExampleRun& hunt_crossley_map_example(const std::string& map, double e_t) {
   return memoised("hunt-crossley/" + map + "/e=" + fmt(e_t), [map, e_t] {
-    const auto m = oracles::find_damping_map(map);
+    const auto m = closed_forms::find_damping_map(map);
     if (!m) throw std::invalid_argument("unknown damping map " + map);
     const double u = m->mu(e_t, 1.0);  // mu v0: every map is mu = f(e)/v0
     const SimulationRequest req = expression("K_h*z^1.5*(1 + u/v0*zdot)", {{"u", u}});

@@ -32,7 +32,7 @@ struct ExampleRun {
 const ExampleRun& thornton_example();
 const ExampleRun& kuwabara_kono_example();
 const ExampleRun& kelvin_voigt_example();
-// Hunt-Crossley with the named map of oracles::damping_maps() at target COR e_t.
+// Hunt-Crossley with the named map of closed_forms::damping_maps() at target COR e_t.
 const ExampleRun& hunt_crossley_map_example(const std::string& map, double e_t);
 // Tsuji-type damping at target e_t, clamped (F >= 0) or with tension until z = 0.
 const ExampleRun& tsuji_example(double e_t, bool tension);

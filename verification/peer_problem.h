@@ -72,8 +72,10 @@ Problem make_problem(const Scene& scene);
 // The result at separation (state x at tau), F_max normalised.
 PeerResult finish(const Problem& pb, const Scene& scene, const State& x, double tau, double F_max);
 
-// The SUNDIALS peers (peers_sundials.cc).
-PeerResult cvode_peer(const Scene& scene, double tol, bool bdf);
+// The SUNDIALS peers (peers_sundials.cc). CVODE's two linear multistep families: Adams-Moulton
+// (non-stiff) and BDF (stiff).
+enum class CvodeMethod { adams, bdf };
+PeerResult cvode_peer(const Scene& scene, double tol, CvodeMethod method);
 PeerResult arkode_erk_peer(const Scene& scene, double tol);
 
 }  // namespace ivv::verification::peer_detail

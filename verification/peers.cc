@@ -203,9 +203,9 @@ PeerResult run_peer(Peer peer, const Scene& scene, double tol) {
     case Peer::odeint_dopri5_dense:
       return odeint_peer(scene, tol);
     case Peer::cvode_adams:
-      return cvode_peer(scene, tol, false);
+      return cvode_peer(scene, tol, CvodeMethod::adams);
     case Peer::cvode_bdf:
-      return cvode_peer(scene, tol, true);
+      return cvode_peer(scene, tol, CvodeMethod::bdf);
     case Peer::arkode_erk:
       return arkode_erk_peer(scene, tol);
   }

@@ -208,9 +208,9 @@ PeerResult Solver::run(const Scene& scene, double tol) {
 
 }  // namespace
 
-PeerResult cvode_peer(const Scene& scene, double tol, bool bdf) {
+PeerResult cvode_peer(const Scene& scene, double tol, CvodeMethod method) {
   thread_local Solver adams(Solver::Kind::cvode_adams), bdf_solver(Solver::Kind::cvode_bdf);
-  return (bdf ? bdf_solver : adams).run(scene, tol);
+  return (method == CvodeMethod::bdf ? bdf_solver : adams).run(scene, tol);
 }
 
 PeerResult arkode_erk_peer(const Scene& scene, double tol) {

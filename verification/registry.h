@@ -62,13 +62,18 @@ Outcome absolute(double measured, double reference, double tolerance, std::strin
 Outcome at_most(double measured, double bound, std::string detail);
 Outcome at_least(double measured, double bound, std::string detail);
 
+// Whether the default ctest run includes a case: a slow one carries the ctest label "slow" and
+// runs under `make test-all` (and always in `ivv verify` and `ivv report`).
+enum class Cost { quick, slow };
+
 struct Case {
   std::string id;     // dotted, stable: "analytic.hertz.undamped.odeint-dopri5"
   std::string title;  // one line for people
   Tier tier = Tier::analytic;
   std::string reason;  // why the tolerance is what it is
-  bool slow = false;   // excluded from the default ctest run (label "slow")
+  Cost cost = Cost::quick;
   std::function<Outcome()> run;
+  bool slow() const { return cost == Cost::slow; }
 };
 
 class Registry {

@@ -25,10 +25,11 @@ TEST(Registry, EveryTierHasCasesAndIdsAreUnique) {
 
 TEST(Registry, RejectsDuplicatesAndMissingReasons) {
   Registry reg;
-  reg.add({"a", "A", Tier::analytic, "because", false, [] { return Outcome{}; }});
-  EXPECT_THROW(reg.add({"a", "A", Tier::analytic, "because", false, [] { return Outcome{}; }}),
-               std::logic_error);
-  EXPECT_THROW(reg.add({"b", "B", Tier::analytic, "", false, [] { return Outcome{}; }}),
+  reg.add({"a", "A", Tier::analytic, "because", Cost::quick, [] { return Outcome{}; }});
+  EXPECT_THROW(
+      reg.add({"a", "A", Tier::analytic, "because", Cost::quick, [] { return Outcome{}; }}),
+      std::logic_error);
+  EXPECT_THROW(reg.add({"b", "B", Tier::analytic, "", Cost::quick, [] { return Outcome{}; }}),
                std::logic_error);
 }
 
@@ -51,8 +52,8 @@ TEST(Glob, MatchesShellStyle) {
 }
 
 TEST(RunCase, ExceptionBecomesFailureNamingIt) {
-  const Case c{"x", "throws", Tier::analytic,
-               "r", false,    []() -> Outcome { throw std::runtime_error("boom"); }};
+  const Case c{"x", "throws",    Tier::analytic,
+               "r", Cost::quick, []() -> Outcome { throw std::runtime_error("boom"); }};
   const CaseRecord rec = run_case(c);
   EXPECT_FALSE(rec.outcome.passed);
   EXPECT_NE(rec.outcome.detail.find("boom"), std::string::npos);

@@ -39,10 +39,10 @@ PaperRun run(const Scene& s, std::string label, const std::string& what) {
 
 LinearizedCurve linearized(const Scene& s) {
   LinearizedCurve out;
-  const oracles::LinearModelInput in = oracles::linear_model_input(s, derive(s));
+  const closed_forms::LinearModelInput in = closed_forms::linear_model_input(s, derive(s));
   try {
-    out.solution = oracles::solve_linear_model(in);
-  } catch (const oracles::LinearizedLawUndefined& e) {
+    out.solution = closed_forms::solve_linear_model(in);
+  } catch (const closed_forms::LinearizedLawUndefined& e) {
     out.z_reached = e.z_max();
     out.z_needed = e.z_min();
     return out;
@@ -52,7 +52,7 @@ LinearizedCurve linearized(const Scene& s) {
   constexpr int kSamples = 600;
   for (int i = 0; i <= kSamples; ++i) {
     const double t = t_end * i / kSamples;
-    const oracles::LinearState st = oracles::linear_model_state(in, out.solution, t);
+    const closed_forms::LinearState st = closed_forms::linear_model_state(in, out.solution, t);
     out.t.push_back(t);
     out.alpha.push_back(st.alpha);
     out.force.push_back(st.F);

@@ -44,7 +44,7 @@ struct LinearizedCurve {
   bool defined = false;
   double z_reached = 0.0;  // undefined: z_m of the loading phase [m]
   double z_needed = 0.0;   // undefined: (K_y/K_h)^2 = 2.25 z_y [m]
-  oracles::LinearImpact solution;
+  closed_forms::LinearImpact solution;
   std::vector<double> t, alpha, force;  // 601 samples [s, m, N] (to 10 t_m when captured)
 };
 

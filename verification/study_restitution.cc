@@ -108,9 +108,10 @@ CorZetaStudy compute_cor_zeta() {
     std::vector<double> lin;
     for (double zeta : st.linear_zetas) {
       const Scene s = with(paper_scene(), v0, zeta);
-      const oracles::LinearModelInput in = oracles::linear_model_input(s, derive(s));
+      const closed_forms::LinearModelInput in = closed_forms::linear_model_input(s, derive(s));
       // NaN outside the linearized law's domain (a gap in the curve)
-      lin.push_back(oracles::linearized_law_defined(in) ? oracles::solve_linear_model(in).e : kNaN);
+      lin.push_back(
+          closed_forms::linearized_law_defined(in) ? closed_forms::solve_linear_model(in).e : kNaN);
     }
     st.linear_e.push_back(std::move(lin));
   }
@@ -122,7 +123,7 @@ std::vector<DampingMapCurve> compute_damping_maps() {
                                                           "hunt_crossley_mu_maps.csv");
   const Scene s = with(paper_scene(), 1.0, 0.0);
   std::vector<DampingMapCurve> out;
-  for (const auto& map : oracles::damping_maps()) {
+  for (const auto& map : closed_forms::damping_maps()) {
     DampingMapCurve c;
     c.name = std::string(map.name);
     c.formula = std::string(map.formula);
@@ -131,7 +132,7 @@ std::vector<DampingMapCurve> compute_damping_maps() {
       DampingMapPoint p;
       p.e_target = row.e_target;
       p.mu = map.mu(row.e_target, s.velocity);
-      p.e_exact = oracles::delivered_cor(map, row.e_target);
+      p.e_exact = closed_forms::delivered_cor(map, row.e_target);
       p.e_table = row.e_delivered;
       SimulationRequest req =
           request(s, LawKind::hunt_crossley, IntegratorKind::odeint_dopri5, p.mu);
@@ -144,7 +145,7 @@ std::vector<DampingMapCurve> compute_damping_maps() {
               [](const auto& a, const auto& b) { return a.e_target < b.e_target; });
     for (double e : linear_grid(0.02, 0.98, 97)) {
       c.curve_target.push_back(e);
-      c.curve_e_exact.push_back(oracles::delivered_cor(map, e));
+      c.curve_e_exact.push_back(closed_forms::delivered_cor(map, e));
     }
     out.push_back(std::move(c));
   }

@@ -95,7 +95,7 @@ const CorZetaStudy& cor_zeta_study();
 struct DampingMapPoint {
   double e_target = 0.0;
   double mu = 0.0;         // the map's mu at v0 = 1 m/s [s/m]
-  double e_exact = 0.0;    // oracles::delivered_cor (exact relation, Lambert W)
+  double e_exact = 0.0;    // closed_forms::delivered_cor (exact relation, Lambert W)
   double e_table = 0.0;    // reference_data/hunt_crossley_mu_maps.csv e_delivered
   ImpactResult simulated;  // Hunt-Crossley, K = K_h, no dashpot, v0 = 1 m/s
 };
@@ -104,7 +104,7 @@ struct DampingMapCurve {
   std::vector<DampingMapPoint> points;  // the table's rows for this map, ascending e_target
   std::vector<double> curve_target, curve_e_exact;  // 97 targets in [0.02, 0.98]
 };
-// One per oracles::damping_maps(); simulated with odeint-dopri5 at kTrendRtol. A run that does
+// One per closed_forms::damping_maps(); simulated with odeint-dopri5 at kTrendRtol. A run that does
 // not separate is kept (the case names it).
 const std::vector<DampingMapCurve>& damping_map_study();
 

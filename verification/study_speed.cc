@@ -20,7 +20,7 @@ FixedStepConvergenceStudy compute_convergence() {
   const std::vector<double> rk4_steps = {0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625};
   const std::vector<double> dp45_steps = {0.1, 0.05, 0.025, 0.0125};
   for (IntegratorKind k : {IntegratorKind::rk4, IntegratorKind::dp45})
-    for (bool located : {true, false}) {
+    for (EventLocation located : {EventLocation::located, EventLocation::at_step_ends}) {
       SimulationRequest base = st.base;
       base.integrator = k;
       st.runs.push_back(
@@ -36,81 +36,88 @@ Scene paper_at(double v0, Damping damping) {
   return s;
 }
 
+// One hard case: its row (what it is, the reference) and the request every integrator runs.
+struct HardCaseSpec {
+  HardCaseRow row;
+  SimulationRequest req;
+};
+
+HardCaseSpec stiff_dashpot_case() {
+  SimulationRequest r;
+  r.scene = paper_at(1.0, Damping::ratio(1000));
+  return {{"stiff dashpot",
+           "paper scene, v0 = 1 m/s, ζ = 1000: the dashpot time scale is 1/(2ζ) = "
+           "5e-4 in τ, the contact lasts far longer",
+           std::numeric_limits<double>::quiet_NaN(),
+           "none in closed form: the integrators check each other",
+           {}},
+          r};
+}
+
+HardCaseSpec grazing_case() {
+  SimulationRequest r;
+  r.scene = paper_at(1e-6, Damping::none());
+  return {{"grazing",
+           "paper scene, v0 = 1e-6 m/s, no dashpot: a nanometre-scale Hertz impact",
+           1.0,
+           "Hertz: elastic, e = 1",
+           {}},
+          r};
+}
+
+HardCaseSpec fast_case() {
+  SimulationRequest r;
+  r.scene = paper_at(100.0, Damping::none());
+  const double e =
+      oracles::solve_undamped_elastoplastic(oracles::elastoplastic_input(r.scene, derive(r.scene)))
+          .e;
+  return {{"fast",
+           "paper scene, v0 = 100 m/s, no dashpot: deep in the plastic range",
+           e,
+           "undamped elastoplastic closed form (energy)",
+           {}},
+          r};
+}
+
+// The linearized law at 50 m/s, zeta = 0.6: its unloading damping ratio zeta/gamma exceeds 1,
+// so the closed form says capture (the scene of stability.capture.*).
+HardCaseSpec capture_case() {
+  SimulationRequest r;
+  r.scene = paper_at(50.0, Damping::ratio(0.6));
+  r.law = LawKind::linearized;
+  const auto lin =
+      closed_forms::solve_linear_model(closed_forms::linear_model_input(r.scene, derive(r.scene)));
+  const std::string zeta1 = "ζ1 = ζ/γ = " + fmt(lin.zeta_unload, 4);
+  return {{"capture",
+           "linearized law, paper scene, v0 = 50 m/s, ζ = 0.6: " + zeta1 +
+               (lin.captured ? " ≥ 1, so the unloading is overdamped: the spring relaxes only "
+                               "asymptotically and nothing rebounds"
+                             : " < 1: a rebound"),
+           lin.e,
+           lin.captured ? "linearized closed form: capture, e = 0"
+                        : "linearized closed form (eqs 22-25)",
+           {}},
+          r};
+}
+
+HardCaseSpec hunt_crossley_case() {
+  SimulationRequest r;
+  r.scene = paper_at(1.0, Damping::none());
+  r.law = LawKind::hunt_crossley;
+  r.parameters["mu"] = 5.0;
+  return {{"Hunt-Crossley μv0 = 5",
+           "Hunt-Crossley (eq. 27) with K = K_h, μ = 5 s/m, v0 = 1 m/s: μv0 > 1, a "
+           "damping force larger than the elastic one",
+           closed_forms::hunt_crossley_cor(5.0),
+           "exact Hunt-Crossley COR (Lambert W)",
+           {}},
+          r};
+}
+
+// Every hard case on every production integrator (timed: information only, never judged).
 std::vector<HardCaseRow> compute_hard_cases() {
-  struct Spec {
-    HardCaseRow row;
-    SimulationRequest req;
-  };
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Spec> specs;
-  {
-    SimulationRequest r;
-    r.scene = paper_at(1.0, Damping::ratio(1000));
-    specs.push_back({{"stiff dashpot",
-                      "paper scene, v0 = 1 m/s, ζ = 1000: the dashpot time scale is 1/(2ζ) = "
-                      "5e-4 in τ, the contact lasts far longer",
-                      nan,
-                      "none in closed form: the integrators check each other",
-                      {}},
-                     r});
-  }
-  {
-    SimulationRequest r;
-    r.scene = paper_at(1e-6, Damping::none());
-    specs.push_back({{"grazing",
-                      "paper scene, v0 = 1e-6 m/s, no dashpot: a nanometre-scale Hertz impact",
-                      1.0,
-                      "Hertz: elastic, e = 1",
-                      {}},
-                     r});
-  }
-  {
-    SimulationRequest r;
-    r.scene = paper_at(100.0, Damping::none());
-    const double e = oracles::solve_undamped_elastoplastic(
-                         oracles::elastoplastic_input(r.scene, derive(r.scene)))
-                         .e;
-    specs.push_back({{"fast",
-                      "paper scene, v0 = 100 m/s, no dashpot: deep in the plastic range",
-                      e,
-                      "undamped elastoplastic closed form (energy)",
-                      {}},
-                     r});
-  }
-  {
-    SimulationRequest r;
-    // The linearized law at 50 m/s, zeta = 0.6: its unloading damping ratio zeta/gamma
-    // exceeds 1, so the closed form says capture (the scene of stability.capture.*).
-    r.scene = paper_at(50.0, Damping::ratio(0.6));
-    r.law = LawKind::linearized;
-    const auto lin =
-        oracles::solve_linear_model(oracles::linear_model_input(r.scene, derive(r.scene)));
-    const std::string zeta1 = "ζ1 = ζ/γ = " + fmt(lin.zeta_unload, 4);
-    specs.push_back(
-        {{"capture",
-          "linearized law, paper scene, v0 = 50 m/s, ζ = 0.6: " + zeta1 +
-              (lin.captured ? " ≥ 1, so the unloading is overdamped: the spring relaxes only "
-                              "asymptotically and nothing rebounds"
-                            : " < 1: a rebound"),
-          lin.e,
-          lin.captured ? "linearized closed form: capture, e = 0"
-                       : "linearized closed form (eqs 22-25)",
-          {}},
-         r});
-  }
-  {
-    SimulationRequest r;
-    r.scene = paper_at(1.0, Damping::none());
-    r.law = LawKind::hunt_crossley;
-    r.parameters["mu"] = 5.0;
-    specs.push_back({{"Hunt-Crossley μv0 = 5",
-                      "Hunt-Crossley (eq. 27) with K = K_h, μ = 5 s/m, v0 = 1 m/s: μv0 > 1, a "
-                      "damping force larger than the elastic one",
-                      oracles::hunt_crossley_cor(5.0),
-                      "exact Hunt-Crossley COR (Lambert W)",
-                      {}},
-                     r});
-  }
+  std::vector<HardCaseSpec> specs = {stiff_dashpot_case(), grazing_case(), fast_case(),
+                                     capture_case(), hunt_crossley_case()};
   std::vector<HardCaseRow> out;
   for (auto& spec : specs) {
     for (IntegratorKind k : production_integrators()) {
@@ -131,9 +138,11 @@ std::vector<HardCaseRow> compute_hard_cases() {
 
 }  // namespace
 
-const ConvergenceStudy& FixedStepConvergenceStudy::of(IntegratorKind k, bool events_located) const {
+const ConvergenceStudy& FixedStepConvergenceStudy::of(IntegratorKind k,
+                                                      EventLocation events) const {
+  const bool located = events == EventLocation::located;
   for (const auto& r : runs)
-    if (r.integrator == k && r.events_located == events_located) return r;
+    if (r.integrator == k && r.events_located == located) return r;
   throw std::out_of_range("no fixed-step convergence run of " + std::string(to_string(k)));
 }
 

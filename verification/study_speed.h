@@ -39,7 +39,7 @@ struct FixedStepConvergenceStudy {
   // rk4 located, rk4 at step ends, dp45 located, dp45 at step ends
   std::vector<ConvergenceStudy> runs;
   // The run of integrator `k` (rk4 or dp45) with or without event location.
-  const ConvergenceStudy& of(IntegratorKind k, bool events_located) const;
+  const ConvergenceStudy& of(IntegratorKind k, EventLocation events) const;
 };
 const FixedStepConvergenceStudy& fixed_step_convergence_study();
 

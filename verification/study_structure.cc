@@ -55,6 +55,7 @@ ZenerPoint zener_units(const Scene& s, const ImpactResult& r) {
   out.separated = r.separated();
   out.contact_time = r.t_contact * s.velocity / z;
   out.peak_force = r.F_max / (p.K_h * z * std::sqrt(z));
+  out.steps = r.steps;
   return out;
 }
 
@@ -129,8 +130,10 @@ void compute_zener(StructureStudy& st) {
   auto g = [&](int i) { return (1.0 - st.small[i].e) / st.small[i].lambda; };
   st.slope_richardson = 2.0 * g(0) - g(1);
   st.slope_richardson_next = 2.0 * g(1) - g(2);
-  for (double lambda : {0.1, 0.5, 1.0}) st.published.push_back(trend_zener_point(lambda));
-  st.published_values = {0.84334, 0.43690, 0.18412};
+  for (double lambda : {0.1, 0.5, 1.0}) {
+    st.checked.push_back(trend_zener_point(lambda));
+    st.series_solution.push_back(oracles::zener_impact(lambda));
+  }
   st.similarity = similarity_set(0.5);
 }
 

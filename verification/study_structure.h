@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "oracles/zener.h"
 #include "scene/scene.h"
 #include "scene/structure.h"
 #include "solver/simulate.h"
@@ -32,6 +33,7 @@ struct ZenerPoint {
   double contact_time = 0.0;  // t_f v0/z* [-]
   double peak_force = 0.0;    // F_max/(K_h z*^{3/2}) [-]
   bool separated = false;     // false: captured (e = 0 within e_bound)
+  long steps = 0;             // accepted steps of the run
 };
 
 // A scene of the similarity set: a plate whose thickness gives the wanted lambda.
@@ -55,14 +57,13 @@ struct ThicknessRow {
 struct StructureStudy {
   // Zener's curve: 41 log-spaced lambda from 1e-3 to 10, and the slope of 1 - e at small lambda
   std::vector<ZenerPoint> curve;
-  double slope_quadrature = 0.0;            // a of 1 - e = a lambda (oracles/zener.h)
-  std::vector<ZenerPoint> small;            // lambda = 1e-3, 2e-3, 4e-3
-  double slope_richardson = 0.0;            // 2 g(1e-3) - g(2e-3), g = (1 - e)/lambda
-  double slope_richardson_next = 0.0;       // 2 g(2e-3) - g(4e-3): its O(lambda^2) error is 4x
-  std::vector<ZenerPoint> published;        // lambda = 0.1, 0.5, 1.0
-  std::vector<double> published_values;     // 0.84334, 0.43690, 0.18412 (quoted to 5 decimals by a
-                                            // review of ivv; not traced to a publication)
-  std::vector<SimilarityPoint> similarity;  // lambda = 0.5 on four unlike scenes
+  double slope_quadrature = 0.0;       // a of 1 - e = a lambda (oracles/zener.h)
+  std::vector<ZenerPoint> small;       // lambda = 1e-3, 2e-3, 4e-3
+  double slope_richardson = 0.0;       // 2 g(1e-3) - g(2e-3), g = (1 - e)/lambda
+  double slope_richardson_next = 0.0;  // 2 g(2e-3) - g(4e-3): its O(lambda^2) error is 4x
+  std::vector<ZenerPoint> checked;     // lambda = 0.1, 0.5, 1.0, simulated
+  std::vector<oracles::ZenerImpact> series_solution;  // the same lambda, oracles/zener.h
+  std::vector<SimilarityPoint> similarity;            // lambda = 0.5 on four unlike scenes
   // the paper's impactor on the T300/934 plate
   Ply ply;                                   // Table 1 ply data
   std::vector<int> stacking;                 // [0/90/0/90/0]s

@@ -58,7 +58,7 @@ TEST(Study, AFailedStudyIsAFailedCaseWithItsReason) {
   static const Study<double> failing(
       "broken study", []() -> double { throw std::runtime_error("the reference failed"); });
   const Case c{
-      "unit.reads-broken-study", "reads a failed study", Tier::analytic, "none", false, [] {
+      "unit.reads-broken-study", "reads a failed study", Tier::analytic, "none", Cost::quick, [] {
         return relative(failing.get(), 1.0, 1e-9, "value");
       }};
   const CaseRecord r = run_case(c);

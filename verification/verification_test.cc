@@ -29,7 +29,7 @@ std::vector<const Case*> every_case() {
 }
 
 std::string test_name(const ::testing::TestParamInfo<const Case*>& info) {
-  std::string n = (info.param->slow ? "SLOW_" : "") + info.param->id;
+  std::string n = (info.param->slow() ? "SLOW_" : "") + info.param->id;
   for (char& ch : n)
     if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
   return n;

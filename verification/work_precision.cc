@@ -172,8 +172,8 @@ OrderStudy measure_order(const SimulationRequest& base, IntegratorKind kind,
                          const std::vector<double>& settings, double error_floor) {
   if (base.law != LawKind::linearized)
     throw std::invalid_argument("measure_order: the closed form needs LawKind::linearized");
-  const oracles::LinearImpact exact =
-      oracles::solve_linear_model(oracles::linear_model_input(base.scene, derive(base.scene)));
+  const closed_forms::LinearImpact exact = closed_forms::solve_linear_model(
+      closed_forms::linear_model_input(base.scene, derive(base.scene)));
   if (exact.captured)
     throw std::invalid_argument("measure_order: the closed form is a capture (no COR)");
   if (!traits(kind).fixed_step_mode)
@@ -214,7 +214,8 @@ OrderStudy measure_order(const SimulationRequest& base, IntegratorKind kind,
 }
 
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
-                                     std::vector<double> dts, bool locate_events) {
+                                     std::vector<double> dts, EventLocation events) {
+  const bool locate_events = events == EventLocation::located;
   if (base.law != LawKind::linearized)
     throw std::invalid_argument("measure_convergence: the closed form needs LawKind::linearized");
   if (!traits(kind).fixed_step_mode)
@@ -223,8 +224,8 @@ ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKi
       std::all_of(dts.begin(), dts.end(), [&](double dt) { return dt == dts[0]; }))
     throw std::invalid_argument("measure_convergence: needs at least two distinct dts");
 
-  const oracles::LinearImpact exact =
-      oracles::solve_linear_model(oracles::linear_model_input(base.scene, derive(base.scene)));
+  const closed_forms::LinearImpact exact = closed_forms::solve_linear_model(
+      closed_forms::linear_model_input(base.scene, derive(base.scene)));
   if (exact.captured)
     throw std::invalid_argument("measure_convergence: the closed form is a capture (no COR)");
   ConvergenceStudy study;

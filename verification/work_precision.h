@@ -9,7 +9,7 @@
 //     adaptive integrators and the fixed step dt in normalised time tau = omega0 t for rk4.
 //   * Convergence order (measure_convergence): the errors of e and of the contact time t_f of
 //     a fixed-step integrator (rk4, or dp45 with its error control off) against the exact
-//     closed form of the linearized model (oracles::solve_linear_model, paper eqs 19-25), and
+//     closed form of the linearized model (closed_forms::solve_linear_model, paper eqs 19-25), and
 //     the least-squares slope of log(error) on log(dt). Measured on the paper scene at 1 m/s
 //     (see work_precision_test.cc for the step ranges):
 //       rk4, events located, zeta = 0.1: e order 4 (the method's order)
@@ -130,6 +130,10 @@ struct WorkPrecisionStudy {
 WorkPrecisionStudy measure_work_precision(const std::string& label, const SimulationRequest& base,
                                           const WorkPrecisionOptions& options);
 
+// Where a fixed-step run finds its events: on the step's interpolant (located), or only at
+// the end of the step that crossed them (options.locate_events = false).
+enum class EventLocation { located, at_step_ends };
+
 // Order of convergence of a fixed-step integrator, measured on a closed form.
 struct ConvergenceStudy {
   IntegratorKind integrator = IntegratorKind::rk4;
@@ -144,16 +148,16 @@ struct ConvergenceStudy {
 // Runs `base` with integrator `kind` (rk4, or dp45 with fixed_step) at each fixed step dt of
 // `dts` (normalised time), with options.locate_events = locate_events, and compares e and t_f
 // with the closed form of the linearized model, with or without a dashpot
-// (oracles::solve_linear_model, paper eqs 22-25). Preconditions (std::invalid_argument
+// (closed_forms::solve_linear_model, paper eqs 22-25). Preconditions (std::invalid_argument
 // otherwise): base.law is LawKind::linearized, the closed form rebounds (no capture), kind is
 // an integrator with a fixed-step mode, at least two distinct dts. Throws std::runtime_error naming
 // dt if a run fails.
 ConvergenceStudy measure_convergence(const SimulationRequest& base, IntegratorKind kind,
-                                     std::vector<double> dts, bool locate_events);
+                                     std::vector<double> dts, EventLocation events);
 
 // Observed order of an integrator of the table with a fixed-step mode
 // (IntegratorTraits::fixed_step_mode), on the closed form of the linearized model (paper eqs
-// 22-25; oracles::solve_linear_model): run at each fixed step dt of `settings` (normalised
+// 22-25; closed_forms::solve_linear_model): run at each fixed step dt of `settings` (normalised
 // time) with error control off and events located; the order is the least-squares slope of
 // log(error of e) on log(dt). Points whose error is below `error_floor` (round-off
 // territory) are left out of the fit and marked so. std::invalid_argument for an integrator

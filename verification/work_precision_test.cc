@@ -106,7 +106,7 @@ TEST(Convergence, Rk4WithDampingIsFourthOrderInTheCor) {
   SimulationRequest req = linearized_paper();
   req.scene.damping = Damping::ratio(0.1);
   const ConvergenceStudy c =
-      measure_convergence(req, IntegratorKind::rk4, steps_from(0.2, 0.005), true);
+      measure_convergence(req, IntegratorKind::rk4, steps_from(0.2, 0.005), EventLocation::located);
   EXPECT_NEAR(c.fitted_order, 4.0, kOrderTolerance);
   for (double err : c.errors_e) EXPECT_GT(err, 1e-14) << "round-off would bias the slope";
 }
@@ -119,8 +119,8 @@ TEST(Convergence, Rk4WithDampingIsFourthOrderInTheCor) {
 // 3e-5 ... 1e-11 (t_f), all far above round-off (~1e-15) and on a straight line; measured
 // slopes 4.98 (e) and 3.98 (t_f).
 TEST(Convergence, Rk4WithEventsIsFourthOrderInTimeAndFifthInTheCor) {
-  const ConvergenceStudy c =
-      measure_convergence(linearized_paper(), IntegratorKind::rk4, steps_from(0.2, 0.005), true);
+  const ConvergenceStudy c = measure_convergence(linearized_paper(), IntegratorKind::rk4,
+                                                 steps_from(0.2, 0.005), EventLocation::located);
   EXPECT_NEAR(c.fitted_order_t_contact, 4.0, kOrderTolerance);
   EXPECT_NEAR(c.fitted_order, 5.0, kOrderTolerance);
   for (double err : c.errors_e) EXPECT_GT(err, 1e-14) << "round-off would bias the slope";
@@ -130,8 +130,8 @@ TEST(Convergence, Rk4WithEventsIsFourthOrderInTimeAndFifthInTheCor) {
 // the error (3e-8 ... 3e-13) above round-off, reached near dt = 3e-3; above dt = 0.1 the
 // error is not yet asymptotic (the slope from 0.2 to 0.126 is 4.1).
 TEST(Convergence, Dp45FixedStepWithEventsIsFifthOrderInTheCor) {
-  const ConvergenceStudy c =
-      measure_convergence(linearized_paper(), IntegratorKind::dp45, steps_from(0.1, 0.01), true);
+  const ConvergenceStudy c = measure_convergence(linearized_paper(), IntegratorKind::dp45,
+                                                 steps_from(0.1, 0.01), EventLocation::located);
   EXPECT_NEAR(c.fitted_order, 5.0, kOrderTolerance);
 }
 
@@ -140,30 +140,31 @@ TEST(Convergence, Dp45FixedStepWithEventsIsFifthOrderInTheCor) {
 // separation is declared at the step end after F = 0: t_f is late by up to one step, order 1.
 // Measured on these steps: 2.1 and 1.1, against 5 and 4 with location.
 TEST(Convergence, WithoutEventLocationTheOrderCollapses) {
-  const ConvergenceStudy c =
-      measure_convergence(linearized_paper(), IntegratorKind::rk4, steps_from(0.2, 0.002), false);
+  const ConvergenceStudy c = measure_convergence(
+      linearized_paper(), IntegratorKind::rk4, steps_from(0.2, 0.002), EventLocation::at_step_ends);
   EXPECT_FALSE(c.events_located);
   EXPECT_LE(c.fitted_order_t_contact, 1.5);
   EXPECT_LE(c.fitted_order, 2.5);
-  const ConvergenceStudy located =
-      measure_convergence(linearized_paper(), IntegratorKind::rk4, steps_from(0.2, 0.002), true);
+  const ConvergenceStudy located = measure_convergence(
+      linearized_paper(), IntegratorKind::rk4, steps_from(0.2, 0.002), EventLocation::located);
   // at the smallest step the lost accuracy is many orders of magnitude
   EXPECT_GT(c.errors_t_contact.back(), 1e6 * located.errors_t_contact.back());
 }
 
 TEST(Convergence, RefusesWhatTheClosedFormDoesNotDescribe) {
   SimulationRequest req = linearized_paper();
-  EXPECT_THROW(measure_convergence(req, IntegratorKind::odeint_rosenbrock4, {0.1, 0.05}, true),
+  EXPECT_THROW(measure_convergence(req, IntegratorKind::odeint_rosenbrock4, {0.1, 0.05},
+                                   EventLocation::located),
                std::invalid_argument);
-  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.1}, true),
+  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.1}, EventLocation::located),
                std::invalid_argument);
   req.law = LawKind::elastoplastic;
-  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, true),
+  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, EventLocation::located),
                std::invalid_argument);
   req = linearized_paper();
   req.scene.velocity = 50.0;
   req.scene.damping = Damping::ratio(0.6);  // unloading damping zeta/gamma >= 1: capture
-  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, true),
+  EXPECT_THROW(measure_convergence(req, IntegratorKind::rk4, {0.1, 0.05}, EventLocation::located),
                std::invalid_argument);
 }
 

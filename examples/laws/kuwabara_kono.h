@@ -50,18 +50,7 @@ struct KuwabaraKonoLaw {
     using std::sqrt;
     return rho * 1.5 * A * sqrt(abs(z));
   }
-  template <class T>
-  std::optional<double> segment_end(const Branch<T>&) const {
-    return std::nullopt;
-  }
-  template <class T>
-  void next_segment(Branch<T>&) const {}
-  template <class T>
-  void begin_unloading(Branch<T>& h, const T& z_m) const {
-    h.phase = Phase::unloading;
-    h.z_max = z_m;
-    h.z_perm = T(0);
-  }
+  // one loading segment; unloading retraces the loading curve: the defaults of law.h
   // The elastic part bounds the rebound: on restitution dxi/dt < 0 and damping only removes.
   template <class T>
   T stored_energy(const Branch<T>&, const T& z) const {

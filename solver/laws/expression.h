@@ -122,8 +122,7 @@ struct ExpressionLaw {
     const double d = step(expr->velocity_scale(), v);
     return (force(h, z, v + d) - force(h, z, v - d)) / (2 * d);
   }
-  std::optional<double> segment_end(const Branch<double>&) const { return std::nullopt; }
-  void next_segment(Branch<double>&) const {}
+  // one loading segment (law.h's default segment_end and next_segment)
   // Records z_m and the permanent set z_f: the zero of the unloading force in [0, z_m] at
   // zdot = 0 (0 when the unloading force is positive down to z = 0).
   void begin_unloading(Branch<double>& h, double z_m) const;

@@ -150,9 +150,9 @@ TEST(ExpressionLaw, UnloadingRecordsThePermanentSetOfItsExpression) {
   Branch<double> h;
   ElastoplasticLaw::History<double> g;
   const double z_m = 6 * p.z_y;
-  law.begin_unloading(h, z_m);
-  ep.next_segment(g);
-  ep.begin_unloading(g, z_m);
+  law_begin_unloading(law, h, z_m);
+  law_next_segment(ep, g);
+  law_begin_unloading(ep, g, z_m);
   // bisection to adjacent doubles of a function with slope ~ K_h sqrt(z_f)
   EXPECT_NEAR(h.z_perm, g.z_perm, 1e-12 * z_m);
   // stored energy by 20-point Gauss-Legendre of a smooth branch: ~1e-13 relative
@@ -167,7 +167,7 @@ TEST(ExpressionLaw, UnloadingFromANonFiniteMaximumIsADomainError) {
   const auto expr = compile("K_h*z^1.5", "K_h*z^1.5 - K_h*zmax^1.5 + 1");
   const ExpressionLaw<false> law{expr, false};
   Branch<double> h;
-  EXPECT_THROW(law.begin_unloading(h, std::nan("")), LawDomainError);
+  EXPECT_THROW(law_begin_unloading(law, h, std::nan("")), LawDomainError);
 }
 
 TEST(ExpressionLaw, SimulateGivesTheBuiltInLawsCorToTheIntegratorsTolerance) {

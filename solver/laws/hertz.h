@@ -48,18 +48,7 @@ struct HertzLaw {
   T rate_stiffness(const Branch<T>&, const T&, const T&) const {
     return T(0);
   }
-  template <class T>
-  std::optional<double> segment_end(const Branch<T>&) const {
-    return std::nullopt;
-  }
-  template <class T>
-  void next_segment(Branch<T>&) const {}
-  template <class T>
-  void begin_unloading(Branch<T>& b, const T& z_m) const {
-    b.phase = Phase::unloading;
-    b.z_max = z_m;
-    b.z_perm = T(0);
-  }
+  // one loading segment; unloading retraces the loading curve: the defaults of law.h
   // (2/5) K_h z^{5/2}
   template <class T>
   T stored_energy(const Branch<T>&, const T& z) const {

@@ -56,18 +56,7 @@ struct HuntCrossleyLaw {
   T rate_stiffness(const Branch<T>&, const T& z, const T&) const {
     return K * mu * signed_pow_1_5(z);
   }
-  template <class T>
-  std::optional<double> segment_end(const Branch<T>&) const {
-    return std::nullopt;
-  }
-  template <class T>
-  void next_segment(Branch<T>&) const {}
-  template <class T>
-  void begin_unloading(Branch<T>& b, const T& z_m) const {
-    b.phase = Phase::unloading;
-    b.z_max = z_m;
-    b.z_perm = T(0);
-  }
+  // one loading segment; unloading retraces the loading curve: the defaults of law.h
   // The elastic part (2/5) K z^{5/2} bounds the rebound energy: on restitution
   // alpha_dot < 0, so the damping factor (1 + mu alpha_dot) < 1 only removes energy.
   template <class T>

@@ -25,7 +25,7 @@ TEST(Hertz, LoadingFollowsThreeHalvesPowerAndUnloadsOnTheSameCurve) {
   Branch<double> b;
   const double z = 4e-5;
   EXPECT_NEAR(law.force(b, z, 0.0), 2.0e9 * std::pow(z, 1.5), kAlgebra * 2e9 * std::pow(z, 1.5));
-  law.begin_unloading(b, z);
+  law_begin_unloading(law, b, z);
   EXPECT_EQ(b.z_perm, 0.0);
   const double half = 2.0e9 * std::pow(z / 2, 1.5);
   EXPECT_NEAR(law.force(b, z / 2, 0.0), half, kAlgebra * half);
@@ -43,11 +43,11 @@ TEST(Elastoplastic, KinkAtYieldIsContinuousWithMatchingSlope) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   ElastoplasticLaw::History<double> b;
-  ASSERT_EQ(*law.segment_end(b), p.z_y);
+  ASSERT_EQ(*law_segment_end(law, b), p.z_y);
   const double hertz_at_yield = law.force(b, p.z_y, 0.0);
   const double hertz_slope = law.stiffness(b, p.z_y, 0.0);
-  law.next_segment(b);
-  EXPECT_FALSE(law.segment_end(b).has_value());
+  law_next_segment(law, b);
+  EXPECT_FALSE(law_segment_end(law, b).has_value());
   EXPECT_NEAR(law.force(b, p.z_y, 0.0), hertz_at_yield, kAlgebra * hertz_at_yield);
   // K_y is defined as the Hertz slope at z_y (eq. 12): the kink is in curvature only.
   EXPECT_NEAR(law.stiffness(b, p.z_y, 0.0), hertz_slope, kAlgebra * hertz_slope);
@@ -57,11 +57,11 @@ TEST(Elastoplastic, UnloadingStartsAtPeakForceAndEndsAtPermanentSet) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   ElastoplasticLaw::History<double> b;
-  law.next_segment(b);
+  law_next_segment(law, b);
   const double z_m = 5 * p.z_y;
   const double F_m = law.force(b, z_m, 0.0);
   EXPECT_NEAR(F_m, p.K_y * 4 * p.z_y + p.K_h * std::pow(p.z_y, 1.5), kAlgebra * F_m);  // eq. 9
-  law.begin_unloading(b, z_m);
+  law_begin_unloading(law, b, z_m);
   EXPECT_NEAR(law.force(b, z_m, 0.0), F_m, kAlgebra * F_m);  // eq. 10 at z = z_m
   const double z_f = std::pow(std::pow(z_m, 1.5) - F_m / p.K_h, 2.0 / 3.0);
   EXPECT_NEAR(b.z_perm, z_f, kAlgebra * z_m);
@@ -74,9 +74,9 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   ElastoplasticLaw::History<double> b;
-  law.next_segment(b);
+  law_next_segment(law, b);
   const double z_m = 3 * p.z_y;
-  law.begin_unloading(b, z_m);
+  law_begin_unloading(law, b, z_m);
   // trapezoid-free check by Simpson on each piece with many panels (error ~ 1e-12 relative)
   auto simpson = [](auto f, double a, double c, int n) {
     const double h = (c - a) / n;
@@ -109,8 +109,8 @@ TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
   for (double ratio : {3.0, 1e4, 1e8, 1e12, 1e16}) {
     const double z_m = ratio * p.z_y;
     ElastoplasticLaw::History<double> b;
-    law.next_segment(b);
-    law.begin_unloading(b, z_m);
+    law_next_segment(law, b);
+    law_begin_unloading(law, b, z_m);
     const mp Kh = p.K_h, zy = p.z_y, zm = z_m;
     const mp F_m = p.K_y * (zm - zy) + Kh * zy * sqrt(zy);
     const mp zf15 = zm * sqrt(zm) - F_m / Kh;
@@ -143,7 +143,7 @@ TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   ElastoplasticLaw::History<double> b;
-  law.begin_unloading(b, 0.5 * p.z_y);
+  law_begin_unloading(law, b, 0.5 * p.z_y);
   EXPECT_EQ(b.z_perm, 0.0);
   EXPECT_EQ(*law.hysteresis_work(b), 0.0);
   const double hertz = p.K_h * std::pow(0.3 * p.z_y, 1.5);
@@ -157,7 +157,7 @@ TEST(Linearized, SecantUnloadingMatchesEquations16To18) {
   LinearizedLaw::History<double> b;
   const double z_m = 10 * p.z_y;
   EXPECT_EQ(law.force(b, z_m, 0.0), p.K_y * z_m);  // eq. 15
-  law.begin_unloading(b, z_m);
+  law_begin_unloading(law, b, z_m);
   const double z_f = z_m * std::pow(1 - p.K_y / (p.K_h * std::sqrt(z_m)), 2.0 / 3.0);  // eq. 17
   const double gamma2 = 1 - z_f / z_m;                                                 // eq. 18
   EXPECT_NEAR(b.z_perm, z_f, kAlgebra * z_m);
@@ -176,13 +176,14 @@ TEST(Linearized, UndefinedBelowTwoAndAQuarterYieldDeformations) {
   const LinearizedLaw law{p.K_h, p.K_y};
   LinearizedLaw::History<double> b;
   try {
-    law.begin_unloading(b, 2.0 * p.z_y);
+    law_begin_unloading(law, b, 2.0 * p.z_y);
     FAIL() << "no domain error";
   } catch (const LawDomainError& e) {
     EXPECT_NE(std::string(e.what()).find("2.25 z_y"), std::string::npos) << e.what();
   }
   LinearizedLaw::History<double> edge;
-  law.begin_unloading(edge, law.minimum_z_max());  // exactly at the boundary: elastic unloading
+  law_begin_unloading(law, edge,
+                      law.minimum_z_max());  // exactly at the boundary: elastic unloading
   EXPECT_NEAR(edge.z_perm, 0.0, 1e-6 * p.z_y);
   EXPECT_TRUE(std::isfinite(edge.unloading_stiffness));
 }
@@ -222,19 +223,42 @@ struct NoStoredEnergy {
 static_assert(law_has_force<NoStoredEnergy> && law_has_history<NoStoredEnergy>);
 static_assert(!law_has_energy<NoStoredEnergy> && !ContactLaw<NoStoredEnergy>);
 
+// The single-branch laws leave segment_end, next_segment and begin_unloading to law.h.
+static_assert(!law_declares_segment_end<HertzLaw> && !law_declares_next_segment<HertzLaw> &&
+              !law_declares_begin_unloading<HertzLaw>);
+static_assert(!law_declares_begin_unloading<HuntCrossleyLaw>);
+static_assert(law_declares_segment_end<ElastoplasticLaw> &&
+              law_declares_begin_unloading<ElastoplasticLaw>);
+
+// The defaults: one loading segment (next_segment changes nothing), and unloading that records
+// z_m with no permanent set.
+TEST(ContactLawDefaults, ASingleBranchLawUnloadsOnItsLoadingCurve) {
+  const HuntCrossleyLaw law{1e9, 0.5};
+  Branch<double> b;
+  EXPECT_FALSE(law_segment_end(law, b).has_value());
+  law_next_segment(law, b);
+  EXPECT_EQ(b.segment, 0);
+  EXPECT_EQ(b.phase, Phase::loading);
+  b.z_perm = 1.0;  // so that the default is seen to set it
+  law_begin_unloading(law, b, 3e-5);
+  EXPECT_EQ(b.phase, Phase::unloading);
+  EXPECT_EQ(b.z_max, 3e-5);
+  EXPECT_EQ(b.z_perm, 0.0);
+}
+
 TEST(ContactLawHistory, EachLawNamesItsOwnUnloadingState) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw ep{p.K_h, p.z_y, p.K_y};
   ElastoplasticLaw::History<double> h;
-  ep.next_segment(h);
+  law_next_segment(ep, h);
   const double z_m = 4 * p.z_y;
-  ep.begin_unloading(h, z_m);
+  law_begin_unloading(ep, h, z_m);
   // the offset is a force: F_m - K_h z_m^{3/2}
   const double F_m = p.K_y * 3 * p.z_y + p.K_h * std::pow(p.z_y, 1.5);
   EXPECT_NEAR(h.hertz_offset, F_m - p.K_h * std::pow(z_m, 1.5), kAlgebra * F_m);
   const LinearizedLaw li{p.K_h, p.K_y};
   LinearizedLaw::History<double> g;
-  li.begin_unloading(g, 10 * p.z_y);
+  law_begin_unloading(li, g, 10 * p.z_y);
   // the unloading stiffness is the secant from (z_f, 0) to (z_m, K_y z_m)
   const double secant = p.K_y * 10 * p.z_y / (10 * p.z_y - g.z_perm);
   EXPECT_NEAR(g.unloading_stiffness, secant, kAlgebra * secant);

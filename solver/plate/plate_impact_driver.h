@@ -133,7 +133,7 @@ class PlateImpactDriver {
     };
     add(Root::max_compression, Direction::falling);
     std::optional<double> z_end;
-    if (loading) z_end = law_.segment_end(sys_.history);
+    if (loading) z_end = law_segment_end(law_, sys_.history);
     if (z_end) add(Root::segment_end, Direction::rising);
     if (!loading) add(Root::reload, Direction::rising);
     if (!loading) add(Root::separation, Direction::falling);
@@ -183,14 +183,14 @@ class PlateImpactDriver {
             std::isnan(out.z_max) ? z * sys_.length() : std::max(out.z_max, z * sys_.length());
         if (sys_.history.phase == Phase::loading) {
           loading_history_ = sys_.history;
-          law_.begin_unloading(sys_.history, z * sys_.length());
+          law_begin_unloading(law_, sys_.history, z * sys_.length());
           reload_force_ = sys_.law_force(z);
         }
         check_ledger(x, F, out);
         return;
       }
       case Root::segment_end:
-        law_.next_segment(sys_.history);
+        law_next_segment(law_, sys_.history);
         return;
       case Root::reload:
         ++out.reloads;
