@@ -51,7 +51,7 @@ using verification::RatioRow;
 using verification::SpeedPoint;
 
 struct BenchTarget {
-  std::string group;   // what it measures: per-impact, peers, map, auto-choice, calibration
+  std::string group;   // what it measures: per-impact, peers, map, auto-choice, calibration, plate
   std::string name;    // what the target says
   double bound = 0.0;  // the target [us] (or [s] for the map)
   std::string unit;
