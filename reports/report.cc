@@ -45,13 +45,16 @@ double seconds_since(Clock::time_point start) {
 // Every figure of the page: ids made unique, drawn in parallel, put in place of placeholders.
 class FigureBook {
  public:
-  // Returns the placeholder to put in the HTML where the figure goes.
-  std::string add(Figure f) {
+  // Returns the placeholder to put in the HTML where the figure goes. A figure placed side by
+  // side with another (in a .grid2) is drawn on a smaller canvas so that its text, scaled
+  // down with it, stays legible.
+  std::string add(Figure f, bool side_by_side = false) {
     std::string id = slug(f.plot.id.empty() ? "plot" : f.plot.id);
     for (int n = 2; ids_.count(id); ++n) id = slug(f.plot.id) + "-" + std::to_string(n);
     ids_.insert(id);
     f.plot.id = id;
     figures_.push_back(std::move(f));
+    sizes_.push_back(side_by_side ? kSideBySideSize : kAloneSize);
     return placeholder(figures_.size() - 1);
   }
 
@@ -63,8 +66,8 @@ class FigureBook {
     // Each figure's error is recorded in its slot, so the loop itself does not throw.
     parallel_for(figures_.size(), threads, [&](std::size_t i) {
       try {
-        svgs_[i] =
-            render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id);
+        svgs_[i] = render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id,
+                              sizes_[i]);
         const SvgCheck check = check_svg(svgs_[i]);
         if (!check.ok())
           errors_[i] = "gnuplot drew " + std::to_string(check.drawn_series) + " of " +
@@ -117,6 +120,7 @@ class FigureBook {
   }
 
   std::vector<Figure> figures_;
+  std::vector<SvgSize> sizes_;
   std::set<std::string> ids_;
   std::vector<std::string> svgs_, errors_;
 };
@@ -326,7 +330,7 @@ std::string figures_html(const std::vector<Figure>& figures, FigureBook& book) {
       out += in_grid ? "</div>\n" : "<div class=\"grid2\">\n";
       in_grid = !in_grid;
     }
-    out += book.add(f);
+    out += book.add(f, in_grid);
   }
   return out + (in_grid ? "</div>\n" : "");
 }
@@ -527,10 +531,10 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
                     "within one study rather than absolute times across machines.</p>\n";
   std::size_t fig = 0;
   for (const auto& study : s.studies) {
-    out += "<h3>Work-precision: " + escape(study.label) + "</h3>\n<div class=\"grid2\">\n";
+    // one integrator per series, up to 13: each plot alone on its row, its key legible
+    out += "<h3>Work-precision: " + escape(study.label) + "</h3>\n";
     out += book.add(s.figures.at(fig++));
     out += book.add(s.figures.at(fig++));
-    out += "</div>\n";
     std::string t = table_open(Source::timing({"cross.*"})) +
                     "<thead><tr><th>integrator</th><th class=\"num\">"
                     "tolerance</th><th class=\"num\">time/impact [s]</th><th class=\"num\">"
