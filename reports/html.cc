@@ -200,6 +200,8 @@ span.source.illustration, span.source.timing { font-weight: 600; color: #8250df;
          border: 1px solid #8250df; border-radius: 4px; padding: 0 .3rem; }
 .grid2 { display: grid; grid-template-columns: repeat(auto-fit, minmax(480px, 1fr));
          gap: 0 1rem; }
+details.tier > summary { cursor: pointer; margin: 1.6rem 0 .4rem; }
+details.tier > summary h3 { display: inline; margin: 0; }
 details.case { margin: .2rem 0; }
 details.case > summary { cursor: pointer; }
 details.case > div { padding: .4rem .8rem; border-left: 3px solid var(--line);
@@ -224,8 +226,9 @@ dl.prov dd { margin: 0; overflow-wrap: anywhere; }
   figure { margin: .3rem 0 .6rem; padding: .3rem; }
   figcaption { font-size: 7.5pt; }
   table.cases { font-size: 7.5pt; }
-  details.case > summary { list-style: none; }
-  details.case::details-content { content-visibility: visible; display: block; }
+  details.case > summary, details.tier > summary { list-style: none; }
+  details.case::details-content, details.tier::details-content {
+    content-visibility: visible; display: block; }
   a { color: inherit; text-decoration: none; }
 }
 )css";
