@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -134,14 +135,16 @@ std::string data_block(const Series& s, const Plot& p) {
 
 // The plot clause's style for the series at `index` of its plot. Colour: one of the 8
 // linetypes, by index; from the ninth series on, the colours repeat and the line changes (a
-// dash-dot line for solid ones, dots for dashed ones). Markers: a different shape or fill for
-// each of the first 15 series (open ones for point-only series, so that coinciding points stay
-// visible). So up to 15 series differ from each other in colour, line or marker.
+// dash-dot line for solid ones, dots for dashed ones). Markers: open ones for point-only
+// series, so that coinciding points stay visible; no two of the first 15 series share both
+// colour and marker. So up to 15 series differ from each other in colour, line or marker.
 std::string style(Series::Style s, int index) {
   // gnuplot point types: 7/5/9/11/13/15 filled circle/square/triangles/diamond/pentagon,
   // 6/4/8/10/12/14 the same open, 1/2/3 plus, cross, star
-  static constexpr int kFilled[] = {7, 5, 9, 11, 13, 15, 1, 2, 3, 6, 4, 8, 10, 12, 14};
-  static constexpr int kOpen[] = {6, 4, 8, 10, 12, 14, 1, 2, 3, 7, 5, 9, 11, 13, 15};
+  // From the tenth series on the colours have come round: the same fill, another shape than
+  // the series of the same colour had.
+  static constexpr int kFilled[] = {7, 5, 9, 11, 13, 15, 1, 2, 3, 9, 11, 13, 15, 7, 5};
+  static constexpr int kOpen[] = {6, 4, 8, 10, 12, 14, 1, 2, 3, 8, 10, 12, 14, 6, 4};
   constexpr int kMarkers = static_cast<int>(std::size(kFilled));
   const bool second_cycle = index >= 8;
   const std::string t = " lt " + std::to_string(index % 8 + 1);
@@ -265,8 +268,13 @@ std::string enhanced_text(const std::string& s) {
 }
 
 std::string gnuplot_script(const Plot& plot, SvgSize size) {
+  // The key sits below the axes, one entry a row when the labels are long: a plot of many
+  // series grows by a key row's height (1.5 font sizes) for each series beyond the 4 that its
+  // size leaves room for, so that the axes keep their height and the y label is not clipped.
+  const int series = static_cast<int>(drawn_labels(plot).size());
+  const int height = size.height + std::max(0, series - 4) * size.font * 3 / 2;
   std::ostringstream gp;
-  gp << "set terminal svg size " << size.width << "," << size.height
+  gp << "set terminal svg size " << size.width << "," << height
      << " dynamic enhanced font 'DejaVu Sans," << size.font << "' background rgb 'white'\n"
      << "set encoding utf8\n";
   // Okabe-Ito colours (distinguishable with colour-blindness), no yellow on white
