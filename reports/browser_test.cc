@@ -10,7 +10,8 @@
 // report itself.
 //
 // EverySectionRendersAtItsAnchor opens the report at each section's anchor (#structure, ...),
-// as a link or a bookmark does, screenshots the window and fails on a blank image.
+// as a link or a bookmark does, and at a case's row in its collapsed tier (where the links
+// under the figures lead), screenshots the window and fails on a blank image.
 //
 // PlotTextIsLegibleAtThePageWidth measures the displayed size of every plot's text (the SVG
 // font size times the scale from the viewBox to the screen) at two window widths.
@@ -419,6 +420,12 @@ TEST_F(ReportInBrowser, EverySectionRendersAtItsAnchor) {
     anchors.push_back(html_.substr(begin, html_.find('"', begin) - begin));
   }
   ASSERT_GE(anchors.size(), 10u) << "the report has ten numbered sections";
+  // and a case's row, inside its collapsed tier: where the links under the figures lead
+  const std::string row = "<tr id=\"";
+  const auto first_case = html_.find(row);
+  ASSERT_NE(first_case, std::string::npos) << "no case row";
+  const auto case_id = first_case + row.size();
+  anchors.push_back(html_.substr(case_id, html_.find('"', case_id) - case_id));
   for (const auto& anchor : anchors) {
     const fs::path png = dir_ / ("section-" + anchor + ".png");
     const fs::path err = dir_ / ("section-" + anchor + ".err");
