@@ -421,6 +421,48 @@ std::vector<std::string> delivered_row(std::vector<std::string> leading,
   return leading;
 }
 
+// The Hunt-Crossley worked example: what each published mu(e) map delivers at each target.
+std::string hunt_crossley_maps_example_html(const SectionOptions& so) {
+  so.say("worked examples: Hunt-Crossley damping maps");
+  std::string out =
+      "<h3 id=\"example-hunt-crossley\">Hunt-Crossley with the published &mu;(e) maps</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup>(1 + &mu; dz/dt) with &mu; from each map for a "
+      "target e, put through <code>check-law --expect-cor</code> (e.g. <code>" +
+      escape(verification::hunt_crossley_map_example("hunt-crossley", 0.5).command) +
+      "</code>). Delivered e: the reference run at v<sub>0</sub> = 1 m/s (it is the same at "
+      "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
+      "miss is within 10<sup>-6</sup>.</p>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& map : closed_forms::damping_maps())
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(
+          delivered_row({escape(map.name), escape(map.formula)},
+                        verification::hunt_crossley_map_example(std::string(map.name), e_t), e_t));
+  return out + table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows,
+                     Source::from_cases({"examples.hunt-crossley.*"}));
+}
+
+// The Tsuji-type damping worked example: the delivered e, clamped and with tension.
+std::string tsuji_example_html(const SectionOptions& so) {
+  so.say("worked examples: Tsuji-type damping");
+  std::string out =
+      "<h3 id=\"example-tsuji\">Hertz with Tsuji-type damping (DEM codes)</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup> + &gamma;<sub>n</sub> dz/dt, &gamma;<sub>n</sub> = "
+      "-2&radic;(5/6) &beta; &radic;(S<sub>n</sub> m), S<sub>n</sub> = 2E*&radic;(R z), "
+      "&beta; = ln e<sub>t</sub>/&radic;(ln&sup2; e<sub>t</sub> + &pi;&sup2;) (LIGGGHTS "
+      "<code>model hertz</code>), once with the force clamped at F &ge; 0 (contact ends at "
+      "F = 0, LIGGGHTS <code>limitForce on</code>) and once with tension until z = 0. "
+      "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
+      "<code>examples.tsuji.*</code>).</p>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (bool tension : {false, true})
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(delivered_row({tension ? "tension until z = 0" : "clamped, F &ge; 0"},
+                                   verification::tsuji_example(e_t, tension), e_t));
+  return out + table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"},
+                     rows, Source::from_cases({"examples.tsuji.*"}));
+}
+
 // Contact-law worked examples: the same memoised conformance runs the example cases judge.
 std::string examples_html(const SectionOptions& so, FigureBook& book) {
   using verification::ExampleRun;
@@ -465,42 +507,7 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
                        place("examples.kelvin-voigt.rejected"),
                        Source::from_cases({"examples.kelvin-voigt.rejected"}));
 
-  so.say("worked examples: Hunt-Crossley damping maps");
-  out +=
-      "<h3 id=\"example-hunt-crossley\">Hunt-Crossley with the published &mu;(e) maps</h3>\n"
-      "<p>F = K<sub>h</sub> z<sup>3/2</sup>(1 + &mu; dz/dt) with &mu; from each map for a "
-      "target e, put through <code>check-law --expect-cor</code> (e.g. <code>" +
-      escape(verification::hunt_crossley_map_example("hunt-crossley", 0.5).command) +
-      "</code>). Delivered e: the reference run at v<sub>0</sub> = 1 m/s (it is the same at "
-      "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
-      "miss is within 10<sup>-6</sup>.</p>\n";
-  std::vector<std::vector<std::string>> rows;
-  for (const auto& map : closed_forms::damping_maps())
-    for (double e_t : verification::example_target_cors())
-      rows.push_back(
-          delivered_row({escape(map.name), escape(map.formula)},
-                        verification::hunt_crossley_map_example(std::string(map.name), e_t), e_t));
-  out += table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows,
-               Source::from_cases({"examples.hunt-crossley.*"}));
-
-  so.say("worked examples: Tsuji-type damping");
-  out +=
-      "<h3 id=\"example-tsuji\">Hertz with Tsuji-type damping (DEM codes)</h3>\n"
-      "<p>F = K<sub>h</sub> z<sup>3/2</sup> + &gamma;<sub>n</sub> dz/dt, &gamma;<sub>n</sub> = "
-      "-2&radic;(5/6) &beta; &radic;(S<sub>n</sub> m), S<sub>n</sub> = 2E*&radic;(R z), "
-      "&beta; = ln e<sub>t</sub>/&radic;(ln&sup2; e<sub>t</sub> + &pi;&sup2;) (LIGGGHTS "
-      "<code>model hertz</code>), once with the force clamped at F &ge; 0 (contact ends at "
-      "F = 0, LIGGGHTS <code>limitForce on</code>) and once with tension until z = 0. "
-      "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
-      "<code>examples.tsuji.*</code>).</p>\n";
-  rows.clear();
-  for (bool tension : {false, true})
-    for (double e_t : verification::example_target_cors())
-      rows.push_back(delivered_row({tension ? "tension until z = 0" : "clamped, F &ge; 0"},
-                                   verification::tsuji_example(e_t, tension), e_t));
-  out += table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"}, rows,
-               Source::from_cases({"examples.tsuji.*"}));
-  return out;
+  return out + hunt_crossley_maps_example_html(so) + tsuji_example_html(so);
 }
 
 std::string restitution_html(const SectionOptions& so, FigureBook& book) {
