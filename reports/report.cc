@@ -58,6 +58,12 @@ class FigureBook {
     return placeholder(figures_.size() - 1);
   }
 
+  // Two figures side by side on one row (a .grid2), each drawn on the side-by-side canvas.
+  std::string side_by_side(Figure left, Figure right) {
+    return "<div class=\"grid2\">\n" + add(std::move(left), true) + add(std::move(right), true) +
+           "</div>\n";
+  }
+
   // Draws every figure with gnuplot on `threads` workers.
   void render(int threads, const SectionOptions& say) {
     svgs_.assign(figures_.size(), {});
@@ -253,7 +259,8 @@ std::string scope_html() {
          "returns from the plate's edges during the contact. The e = 0 of thin plates there is "
          "that idealisation's capture; a finite plate (scene keys <code>length_x</code>, "
          "<code>length_y</code>) keeps the energy in its modes and may rebound, after one or "
-         "several contacts (cases <code>plate.*</code>).</li>\n"
+         "several contacts (cases <code>plate.*</code>; <a href=\"#plate-regime\">where the "
+         "infinite plate stops</a>).</li>\n"
          "<li><b>Strong damping captures the sphere</b> (e = 0): a physical outcome of the "
          "model, reported as captured, not a failure.</li>\n"
          "<li><b>Validation against measurements is not shown</b>: no digitised experimental "
@@ -568,8 +575,8 @@ std::string structure_html(const SectionOptions& so, FigureBook& book) {
   out += s.plate_properties_html;
   const PlateRegimeSection p = plate_regime_section(so);
   out += "<h3 id=\"plate-regime\">Where the infinite plate stops</h3>\n" + p.intro_html;
-  out += "<div class=\"grid2\">\n" + book.add(p.figures.at(0)) + book.add(p.figures.at(1)) +
-         "</div>\n" + book.add(p.figures.at(2)) + p.models_table_html;
+  out += book.side_by_side(p.figures.at(0), p.figures.at(1)) + book.add(p.figures.at(2)) +
+         p.models_table_html;
   return out;
 }
 
@@ -819,7 +826,7 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
        summary_html(records, prov, opt, section_errors, stages)},
       {"paper", "The paper reproduced", paper},
       {"restitution", "Restitution trends", restitution},
-      {"structure", "Damping from the structure (the infinite plate)", structure},
+      {"structure", "Damping from the structure", structure},
       {"validation", "Validation against measurements (synthetic example)", validation},
       {"examples", "Contact-law worked examples", examples},
       {"speed", "Speed against error", speed},

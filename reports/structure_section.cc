@@ -119,8 +119,9 @@ StructureSection structure_section(const SectionOptions& so) {
   StructureSection out;
   out.figures = {zener_figure(st), thickness_figure(st)};
   out.intro_html =
-      "<div class=\"note\" id=\"infinite-plate\"><p><b>Every result of this section is the "
-      "infinite-plate idealisation.</b> The plate's dashpot c = 8 &radic;(&rho; h D*) is the "
+      "<div class=\"note\" id=\"infinite-plate\"><p><b>Zener's curve, the similarity scenes "
+      "and the thickness study below are the infinite-plate idealisation.</b> The plate's "
+      "dashpot c = 8 &radic;(&rho; h D*) is the "
       "energy that bending waves carry away from an <i>infinite</i> plate, never to return: it "
       "holds while no wave comes back from the plate's edges during the contact. So the e = 0 "
       "of the thin plates below (capture) is the infinite plate's answer. A finite plate of "
@@ -129,8 +130,10 @@ StructureSection structure_section(const SectionOptions& so) {
       "<code>length_x</code> and <code>length_y</code> (with <code>edges</code>) is such a "
       "finite plate: ivv then integrates its modes and uses no dashpot. The cases "
       "<code>plate.infinite-limit.*</code> check that a plate large enough for no wave to "
-      "return reproduces this section's e, and <code>plate.cross.convolution.*</code> check "
-      "small plates that rebound with repeated contacts.</p></div>\n"
+      "return reproduces the infinite plate's e, <code>plate.cross.convolution.*</code> check "
+      "small plates that rebound with repeated contacts, and <a href=\"#plate-regime\">Where "
+      "the infinite plate stops</a> (the end of this section) maps where a finite plate departs "
+      "from the idealisation.</p></div>\n"
       "<p>The dashpot derived from the struck structure (paper, after eq. 4): a plate's "
       "c = 8 &radic;(&rho; h D), a bar's c = A &radic;(E &rho;), the two in series. For the Hertz "
       "law it is Zener's (1941) problem with one group, &lambda; = m<sup>3/5</sup> "
