@@ -286,7 +286,7 @@ std::string gnuplot_script(const Plot& plot, SvgSize size) {
      << "set xlabel " << quoted(enhanced_text(plot.x_label)) << "\n"
      << "set ylabel " << quoted(enhanced_text(plot.y_label)) << "\n"
      << "set grid lc rgb '#dddddd'\n"
-     << "set key below horizontal maxrows 4\n"
+     << "set key below horizontal maxrows 4 height 1\n"  // half a line clear of the x label
      << "set border lw 1\n"
      << "set mxtics\nset mytics\n";
   if (plot.log_x) gp << "set logscale x 10\nset format x '%g'\n";

@@ -2,6 +2,7 @@
 // machine-readable companions, write_report's input errors, and
 // that every figure and table of a rendered report names its cases or is labelled.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -333,7 +334,9 @@ std::vector<Element> sourced_elements(const std::string& html) {
 
 TEST(WriteReport, EveryFigureAndTableNamesItsCasesOrIsLabelled) {
   ReportOptions o;
-  o.out_dir = fs::temp_directory_path() / "ivv-report-sources";
+  // one directory per process: ctest runs of other build trees on this machine write the same
+  // report at the same time, and a shared directory once mixed their pages
+  o.out_dir = fs::temp_directory_path() / ("ivv-report-sources-" + std::to_string(getpid()));
   o.filter = "trend.paper.*";
   o.quick = true;
   o.threads = 2;
