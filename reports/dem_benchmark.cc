@@ -9,8 +9,7 @@
 namespace ivv::reports {
 
 std::string dem_benchmark_html(const std::vector<verification::CaseRecord>& records) {
-  std::string out = "<h2 id=\"dem\">7. DEM benchmark: Chung &amp; Ooi (2011)</h2>\n";
-  out +=
+  std::string out =
       "<p>The elastic normal-impact tests of Y. C. Chung and J. Y. Ooi, <i>Benchmark tests for "
       "verifying discrete element modelling codes at particle impact level</i>, Granular Matter "
       "13 (2011) 643–656, as shipped scenes (<code>--scene NAME --law hertz</code>). Test 1: two "

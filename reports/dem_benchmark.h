@@ -15,8 +15,8 @@
 
 namespace ivv::reports {
 
-// HTML of the section (heading included). Scenes are loaded by name; a scene that cannot be
-// loaded throws InputError (the report shows the section as failed).
+// HTML of the section's body (the page gives it its heading). Scenes are loaded by name; a scene
+// that cannot be loaded throws InputError (the report shows the section as failed).
 std::string dem_benchmark_html(const std::vector<verification::CaseRecord>& records);
 
 }  // namespace ivv::reports

@@ -24,10 +24,25 @@ class EmptyPlot : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The drawing's size in viewBox units and the font size in the same units. The page scales
+// the drawing to its box, and the text with it: displayed text = font * displayed width /
+// width. The two layouts of the report are chosen so that this stays at or above 11 px
+// (browser_test measures it): alone, a plot is shown 640-760 px wide; side by side, 460-530 px
+// (two columns of at least 480 px, see html.cc), hence its smaller viewBox.
 struct SvgSize {
   int width = 640;   // [px] of the viewBox; the page scales it to the column width
   int height = 420;  // [px]
+  int font = 13;     // [px] of the viewBox: axis, tick and key text
 };
+constexpr SvgSize kAloneSize{640, 420, 13};
+constexpr SvgSize kSideBySideSize{480, 380, 12};
+
+// A plot label written in plain text, as the verification cases write them ("K_h^{2/5}",
+// "v0/v_y", "r^(1/4)", "zeta = 0.1", "omega0 dt"), as gnuplot enhanced text: _x and _{..}
+// subscripts, ^x, ^{..} and ^(..) superscripts, a one-letter symbol followed by 0 (v0, ω0)
+// with a subscript 0, Greek names as whole words (lambda, zeta, omega, ...) as letters, "+-"
+// as ±; every other enhanced-text control character (@ & ~ { } \) escaped so that it prints.
+std::string enhanced_text(const std::string& plain);
 
 // The gnuplot script for `plot` (exposed for tests). Throws EmptyPlot if nothing is drawable.
 std::string gnuplot_script(const verification::Plot& plot, SvgSize size = {});

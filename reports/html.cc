@@ -147,9 +147,15 @@ constexpr std::string_view kStyle = R"css(
 :root { --fg: #1b1f24; --muted: #57606a; --line: #d0d7de; --pass: #1a7f37; --fail: #cf222e;
         --bg-alt: #f6f8fa; }
 * { box-sizing: border-box; }
-body { font-family: system-ui, -apple-system, "Segoe UI", "DejaVu Sans", sans-serif;
-       color: var(--fg); margin: 0 auto; padding: 1.5rem 2rem 4rem; max-width: 1180px;
-       line-height: 1.45; font-size: 15px; }
+/* The body, not the document, scrolls. Headless Chromium's --screenshot captures the document
+   from its origin while it rasters only the part scrolled to, so a page opened at an anchor
+   below the first screen (#structure) came out blank; with the root never scrolled, the capture
+   is what the reader sees. Print restores the normal flow. */
+html { height: 100%; overflow: hidden; }
+body { height: 100%; overflow-y: auto; margin: 0;
+       font-family: system-ui, -apple-system, "Segoe UI", "DejaVu Sans", sans-serif;
+       color: var(--fg); line-height: 1.45; font-size: 15px; }
+div.page { margin: 0 auto; padding: 1.5rem 2rem 4rem; max-width: 1180px; }
 h1 { font-size: 1.8rem; margin: 0 0 .3rem; }
 h2 { font-size: 1.35rem; margin-top: 2.4rem; padding-bottom: .3rem;
      border-bottom: 2px solid var(--line); }
@@ -194,6 +200,8 @@ span.source.illustration, span.source.timing { font-weight: 600; color: #8250df;
          border: 1px solid #8250df; border-radius: 4px; padding: 0 .3rem; }
 .grid2 { display: grid; grid-template-columns: repeat(auto-fit, minmax(480px, 1fr));
          gap: 0 1rem; }
+details.tier > summary { cursor: pointer; margin: 1.6rem 0 .4rem; }
+details.tier > summary h3 { display: inline; margin: 0; }
 details.case { margin: .2rem 0; }
 details.case > summary { cursor: pointer; }
 details.case > div { padding: .4rem .8rem; border-left: 3px solid var(--line);
@@ -205,7 +213,9 @@ dl.prov { display: grid; grid-template-columns: max-content 1fr; gap: .15rem 1re
 dl.prov dt { font-weight: 600; }
 dl.prov dd { margin: 0; overflow-wrap: anywhere; }
 @media print {
-  body { max-width: none; padding: 0; font-size: 10.5pt; }
+  html, body { height: auto; overflow: visible; }
+  body { font-size: 10.5pt; }
+  div.page { max-width: none; padding: 0; }
   nav.toc { display: none; }
   h2 { break-before: page; }
   h2.first { break-before: auto; }
@@ -216,8 +226,9 @@ dl.prov dd { margin: 0; overflow-wrap: anywhere; }
   figure { margin: .3rem 0 .6rem; padding: .3rem; }
   figcaption { font-size: 7.5pt; }
   table.cases { font-size: 7.5pt; }
-  details.case > summary { list-style: none; }
-  details.case::details-content { content-visibility: visible; display: block; }
+  details.case > summary, details.tier > summary { list-style: none; }
+  details.case::details-content, details.tier::details-content {
+    content-visibility: visible; display: block; }
   a { color: inherit; text-decoration: none; }
 }
 )css";
@@ -228,9 +239,9 @@ std::string page(std::string_view title, std::string_view body) {
   out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   out += "<title>" + escape(title) + "</title>\n<style>";
   out += kStyle;
-  out += "</style>\n</head>\n<body>\n";
+  out += "</style>\n</head>\n<body>\n<div class=\"page\">\n";
   out += body;
-  out += "\n</body>\n</html>\n";
+  out += "\n</div>\n</body>\n</html>\n";
   return out;
 }
 

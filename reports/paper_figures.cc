@@ -43,42 +43,53 @@ constexpr const char* kTable1 =
 
 constexpr const char* kIntegrator = "numerical, odeint-dopri5 at rtol 1e-12";
 
-// Figs 2-7: one velocity, two figures.
-void response_figures(const verification::PaperResponse& r, int fig, std::vector<Figure>& out) {
+// The curves of one velocity of Figs 2-7: each model's force against time and against the
+// sphere's displacement.
+struct ResponseCurves {
+  Series nl_force, nl_hyst, lin_force, lin_hyst, hc_force, hc_hyst;
+};
+
+ResponseCurves response_curves(const verification::PaperResponse& r) {
+  ResponseCurves c{curve("nonlinear elastoplastic (numerical)"),
+                   curve("nonlinear elastoplastic (numerical)"),
+                   curve("linearized (closed form)", Series::Style::dashed),
+                   curve("linearized (closed form)", Series::Style::dashed),
+                   curve("Hunt-Crossley fitted (numerical)"),
+                   curve("Hunt-Crossley fitted (numerical)")};
+  for (const auto& pt : r.model.trajectory) {
+    add(c.nl_force, pt.t * 1e3, pt.force);
+    add(c.nl_hyst, pt.alpha * 1e3, pt.force);
+  }
+  const verification::LinearizedCurve& lin = r.linearized;
+  for (std::size_t i = 0; i < lin.t.size(); ++i) {
+    add(c.lin_force, lin.t[i] * 1e3, lin.force[i]);
+    add(c.lin_hyst, lin.alpha[i] * 1e3, lin.force[i]);
+  }
+  for (const auto& pt : r.hunt_crossley.trajectory) {
+    add(c.hc_force, pt.t * 1e3, pt.force);
+    add(c.hc_hyst, pt.alpha * 1e3, pt.force);
+  }
+  return c;
+}
+
+// Why no linearized curve is drawn (empty when the law is defined at this velocity).
+std::string linearized_undefined_text(const verification::LinearizedCurve& lin) {
+  if (lin.defined) return {};
+  return "The linearized law is undefined here: its loading reaches z<sub>m</sub> = " +
+         number(lin.z_reached * 1e6, 4) +
+         " µm &lt; (K<sub>y</sub>/K<sub>h</sub>)<sup>2</sup>"
+         " = 2.25 z<sub>y</sub> = " +
+         number(lin.z_needed * 1e6, 4) +
+         " µm, where eq. 17 would raise a negative number to the power 2/3; no "
+         "linearized curve is drawn.";
+}
+
+// The caption of a force history: the scene, the fitted Hunt-Crossley law and each model's
+// outcome.
+std::string force_history_caption(const verification::PaperResponse& r) {
   const double v0 = r.v0;
-  const Scene& s = r.model.scene;
   const HuntCrossleyFit& fit = r.fit;
   const verification::LinearizedCurve& lin = r.linearized;
-
-  Series nl_force = curve("nonlinear elastoplastic (numerical)");
-  Series nl_hyst = curve("nonlinear elastoplastic (numerical)");
-  for (const auto& pt : r.model.trajectory) {
-    add(nl_force, pt.t * 1e3, pt.force);
-    add(nl_hyst, pt.alpha * 1e3, pt.force);
-  }
-  Series lin_force = curve("linearized (closed form)", Series::Style::dashed);
-  Series lin_hyst = curve("linearized (closed form)", Series::Style::dashed);
-  for (std::size_t i = 0; i < lin.t.size(); ++i) {
-    add(lin_force, lin.t[i] * 1e3, lin.force[i]);
-    add(lin_hyst, lin.alpha[i] * 1e3, lin.force[i]);
-  }
-  Series hc_force = curve("Hunt-Crossley fitted (numerical)");
-  Series hc_hyst = curve("Hunt-Crossley fitted (numerical)");
-  for (const auto& pt : r.hunt_crossley.trajectory) {
-    add(hc_force, pt.t * 1e3, pt.force);
-    add(hc_hyst, pt.alpha * 1e3, pt.force);
-  }
-  const std::string why_not =
-      lin.defined ? std::string()
-                  : "The linearized law is undefined here: its loading reaches z<sub>m</sub> = " +
-                        number(lin.z_reached * 1e6, 4) +
-                        " µm &lt; (K<sub>y</sub>/K<sub>h</sub>)<sup>2</sup>"
-                        " = 2.25 z<sub>y</sub> = " +
-                        number(lin.z_needed * 1e6, 4) +
-                        " µm, where eq. 17 would raise a negative number to the power 2/3; no "
-                        "linearized curve is drawn.";
-
-  const std::string v = number(v0, 3), fa = std::to_string(fig), fb = std::to_string(fig + 1);
   const std::string hc_text =
       "Hunt-Crossley (eq. 27, no dashpot) fitted to the model's "
       "F<sub>max</sub> and e by <code>fit_hunt_crossley</code>: <b>K = " +
@@ -90,7 +101,32 @@ void response_figures(const verification::PaperResponse& r, int fig, std::vector
                ", F<sub>max</sub> = " + number(lin.solution.F_max, 4) + " N, t<sub>f</sub> = " +
                (lin.solution.captured ? std::string("∞ (capture)") : ms(lin.solution.t_contact));
   results += "; Hunt-Crossley: " + outcome_values(r.hunt_crossley.result) + ".";
+  return " v<sub>0</sub> = " + number(v0, 3) + " m/s, " + zeta_text(r.model.scene) + "; " +
+         kTable1 + "; " + kIntegrator + ". " + hc_text + results +
+         (lin.defined ? "" : " " + linearized_undefined_text(lin));
+}
 
+// The caption of a force-displacement loop (Fig. fb) of the impacts of Fig. fa.
+std::string force_displacement_caption(const verification::PaperResponse& r,
+                                       const std::string& fa) {
+  return " The impacts of Fig. " + fa + " (v<sub>0</sub> = " + number(r.v0, 3) +
+         " m/s, ζ = 0.1; Hunt-Crossley K = " + number_html(r.fit.K, 4) +
+         " N/m<sup>1.5</sup>, μ = " + number(r.fit.mu, 4) +
+         " s/m). Each loop ends at separation; the model's final displacement "
+         "is the dashpot set y<sub>f</sub> = " +
+         number(r.model.result.y_final * 1e3, 3) +
+         " mm plus the spring's permanent set z<sub>f</sub> = " +
+         number(r.model.result.z_perm * 1e3, 3) + " mm." +
+         (r.linearized.defined
+              ? ""
+              : " No linearized curve: undefined at this velocity (see Fig. " + fa + ").");
+}
+
+// Figs 2-7: one velocity, two figures (Fig. `fig`: force history; Fig. fig + 1: force against
+// displacement).
+void response_figures(const verification::PaperResponse& r, int fig, std::vector<Figure>& out) {
+  const ResponseCurves c = response_curves(r);
+  const std::string v = number(r.v0, 3), fa = std::to_string(fig), fb = std::to_string(fig + 1);
   const Source related = Source::illustration(
       {"trend.paper.elastic-at-0.1-plastic-at-1-and-5", "trend.paper.linear-close-to-nonlinear",
        "trend.paper.hunt-crossley-fit", "trend.paper.hunt-crossley-longer-contact",
@@ -99,31 +135,16 @@ void response_figures(const verification::PaperResponse& r, int fig, std::vector
                                   "Fig. " + fa + ": impact force history, v0 = " + v + " m/s");
   // an undefined linearized law leaves its (empty) series in place: colours stay the same
   // across Figs 2-7
-  force.series = {nl_force, lin_force, hc_force};
-  out.push_back({force,
-                 " v<sub>0</sub> = " + v + " m/s, " + zeta_text(s) + "; " + kTable1 + "; " +
-                     kIntegrator + ". " + hc_text + results + (lin.defined ? "" : " " + why_not),
-                 false, related});
+  force.series = {c.nl_force, c.lin_force, c.hc_force};
+  out.push_back({force, force_history_caption(r), false, related});
 
   Plot hyst;
   hyst.id = "paper-fig" + fb + "-force-displacement";
   hyst.title = "Fig. " + fb + ": impact force against sphere displacement, v0 = " + v + " m/s";
   hyst.x_label = "sphere displacement α [mm]";
   hyst.y_label = "impact force F [N]";
-  hyst.series = {nl_hyst, lin_hyst, hc_hyst};
-  out.push_back({hyst,
-                 " The impacts of Fig. " + fa + " (v<sub>0</sub> = " + v +
-                     " m/s, ζ = 0.1; Hunt-Crossley K = " + number_html(fit.K, 4) +
-                     " N/m<sup>1.5</sup>, μ = " + number(fit.mu, 4) +
-                     " s/m). Each loop ends at separation; the model's final displacement "
-                     "is the dashpot set y<sub>f</sub> = " +
-                     number(r.model.result.y_final * 1e3, 3) +
-                     " mm plus the spring's permanent set z<sub>f</sub> = " +
-                     number(r.model.result.z_perm * 1e3, 3) + " mm." +
-                     (lin.defined ? ""
-                                  : " No linearized curve: undefined at this velocity (see Fig. " +
-                                        fa + ")."),
-                 false, related});
+  hyst.series = {c.nl_hyst, c.lin_hyst, c.hc_hyst};
+  out.push_back({hyst, force_displacement_caption(r, fa), false, related});
 }
 
 // Figs 8 and 9: one parameter varied, force history, c held.

@@ -45,14 +45,23 @@ double seconds_since(Clock::time_point start) {
 // Every figure of the page: ids made unique, drawn in parallel, put in place of placeholders.
 class FigureBook {
  public:
-  // Returns the placeholder to put in the HTML where the figure goes.
-  std::string add(Figure f) {
+  // Returns the placeholder to put in the HTML where the figure goes. A figure placed side by
+  // side with another (in a .grid2) is drawn on a smaller canvas so that its text, scaled
+  // down with it, stays legible.
+  std::string add(Figure f, bool side_by_side = false) {
     std::string id = slug(f.plot.id.empty() ? "plot" : f.plot.id);
     for (int n = 2; ids_.count(id); ++n) id = slug(f.plot.id) + "-" + std::to_string(n);
     ids_.insert(id);
     f.plot.id = id;
     figures_.push_back(std::move(f));
+    sizes_.push_back(side_by_side ? kSideBySideSize : kAloneSize);
     return placeholder(figures_.size() - 1);
+  }
+
+  // Two figures side by side on one row (a .grid2), each drawn on the side-by-side canvas.
+  std::string side_by_side(Figure left, Figure right) {
+    return "<div class=\"grid2\">\n" + add(std::move(left), true) + add(std::move(right), true) +
+           "</div>\n";
   }
 
   // Draws every figure with gnuplot on `threads` workers.
@@ -63,8 +72,8 @@ class FigureBook {
     // Each figure's error is recorded in its slot, so the loop itself does not throw.
     parallel_for(figures_.size(), threads, [&](std::size_t i) {
       try {
-        svgs_[i] =
-            render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id);
+        svgs_[i] = render_svg(figures_[i].plot, "p" + std::to_string(i) + "-" + figures_[i].plot.id,
+                              sizes_[i]);
         const SvgCheck check = check_svg(svgs_[i]);
         if (!check.ok())
           errors_[i] = "gnuplot drew " + std::to_string(check.drawn_series) + " of " +
@@ -117,6 +126,7 @@ class FigureBook {
   }
 
   std::vector<Figure> figures_;
+  std::vector<SvgSize> sizes_;
   std::set<std::string> ids_;
   std::vector<std::string> svgs_, errors_;
 };
@@ -212,14 +222,60 @@ std::string provenance_html(const Provenance& prov, const ReportOptions& opt,
   return out;
 }
 
+// What the report verifies, and where the model stops applying: the first thing a reader
+// needs, before any figure. Words and links only; the numbers are in the sections and cases
+// linked.
+std::string scope_html() {
+  return "<h3 id=\"scope\">What is verified</h3>\n<ul class=\"scope\">\n"
+         "<li><b>The solvers against closed forms</b> (tier analytic): Hertz, the undamped "
+         "elastoplastic impact by energy, the linearized model (paper eqs 22-25), Hunt-Crossley "
+         "by the Lambert W function, Zener's sphere on a plate.</li>\n"
+         "<li><b>Independent implementations against each other</b> (cross-implementation): "
+         "odeint, a hand-written Runge-Kutta, GSL, SUNDIALS and a 50-digit reference share the "
+         "contact laws and nothing else; a finite plate's modes against a convolution "
+         "oracle.</li>\n"
+         "<li><b>Energy and momentum</b> (conservation): the energy ledger and the impulse of "
+         "every run.</li>\n"
+         "<li><b>The paper's and the literature's trends</b> (published-trend, <a "
+         "href=\"#paper\">the paper reproduced</a>, <a href=\"#restitution\">restitution "
+         "trends</a>): the paper's "
+         "claims, Thornton (1997), the v<sub>0</sub><sup>-1/4</sup> limit, the Hunt-Crossley "
+         "damping maps.</li>\n"
+         "<li><b>The numerics</b> (convergence, stability, <a href=\"#speed\">speed against "
+         "error</a>): "
+         "convergence orders, events located on the interpolant, the hard scenes of "
+         "docs/design.md §6.</li>\n</ul>\n"
+         "<h3 id=\"limits\">Where the model stops applying</h3>\n<ul class=\"scope\">\n"
+         "<li><b>A frictionless central impact</b> of a sphere on a half-space or a large "
+         "structure: one contact spring in series with one dashpot. No friction, rotation or "
+         "oblique impact.</li>\n"
+         "<li><b>The linearized law</b> (eqs 15-18) is undefined when the compression stays "
+         "below 2.25 z<sub>y</sub> (elastic impacts and those just above yield); ivv says so "
+         "instead of returning a number, and the paper's figures draw no linearized curve "
+         "there.</li>\n"
+         "<li><b>The dashpot from the structure is the infinite plate's</b> (<a "
+         "href=\"#structure\">damping from the structure</a>): c = 8&radic;(&rho;hD*) holds while "
+         "no bending wave "
+         "returns from the plate's edges during the contact. The e = 0 of thin plates there is "
+         "that idealisation's capture; a finite plate (scene keys <code>length_x</code>, "
+         "<code>length_y</code>) keeps the energy in its modes and may rebound, after one or "
+         "several contacts (cases <code>plate.*</code>; <a href=\"#plate-regime\">where the "
+         "infinite plate stops</a>).</li>\n"
+         "<li><b>Strong damping captures the sphere</b> (e = 0): a physical outcome of the "
+         "model, reported as captured, not a failure.</li>\n"
+         "<li><b>Validation against measurements is not shown</b>: no digitised experimental "
+         "restitution data is at hand; <a href=\"#validation\">validation</a> demonstrates the "
+         "method on synthetic data.</li>\n</ul>\n";
+}
+
 std::string summary_html(const std::vector<CaseRecord>& records, const Provenance& prov,
                          const ReportOptions& opt, const std::vector<std::string>& section_errors,
                          const std::vector<std::pair<std::string, double>>& stage_seconds) {
   std::size_t failed = 0;
   for (const auto& r : records) failed += r.outcome.passed ? 0 : 1;
   const bool ok = failed == 0 && section_errors.empty();
-  std::string out = "<h2 id=\"summary\" class=\"first\">1. Summary</h2>\n";
-  out += std::string("<div class=\"verdict ") + (ok ? "pass" : "fail") + "\" id=\"verdict\">";
+  std::string out =
+      std::string("<div class=\"verdict ") + (ok ? "pass" : "fail") + "\" id=\"verdict\">";
   if (ok) {
     out += "PASS: all " + std::to_string(records.size()) + " verification cases passed";
   } else {
@@ -238,8 +294,6 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
     out += "<p class=\"note\">Only the cases matching <code>" + escape(opt.filter) +
            "</code> were run.</p>\n";
 
-  out += tier_counts_html(records);
-
   if (failed > 0 || !section_errors.empty()) {
     out += "<h3 id=\"failures\">What fell short</h3>\n";
     std::vector<std::vector<std::string>> frows;
@@ -253,31 +307,67 @@ std::string summary_html(const std::vector<CaseRecord>& records, const Provenanc
     out +=
         table({"case", "comparison", "detail"}, frows, Source::rows_are_cases(), "data failures");
   }
-
+  out += scope_html();
+  out += tier_counts_html(records);
   out += provenance_html(prov, opt, stage_seconds);
   return out;
 }
 
-// ---- section 4 ---------------------------------------------------------------------------
+// ---- every verification case -----------------------------------------------------------
 
+// The rows of one case: its measurement and verdict, then its detail and plots (collapsed
+// when it passed).
+std::string case_rows(const CaseRecord& r, FigureBook& book) {
+  const auto& o = r.outcome;
+  std::string out = std::string("<tr id=\"") + case_anchor(r.c->id) + "\"" +
+                    (o.passed ? "" : " class=\"failed\"") + "><td><code>" + escape(r.c->id) +
+                    "</code><br>" + escape(r.c->title) + "</td>" + "<td class=\"num\">" +
+                    num_cell(o.measured, 6) + "</td><td class=\"num\">" + num_cell(o.reference, 6) +
+                    "</td><td class=\"num\">" + num_cell(o.tolerance, 3) + "</td><td>" +
+                    escape(std::string(verification::to_string(o.comparison))) +
+                    "</td><td class=\"reason\">" + escape(r.c->reason) + "</td><td class=\"num\">" +
+                    number(o.margin(), 3) + "</td><td>" + pass_fail(o.passed) + "</td></tr>\n";
+  std::string detail = "<p>" + escape(o.detail) + "</p><p>" + escape(comparison_text(o)) +
+                       "; run time " + number(r.seconds, 3) + " s.</p>\n";
+  for (std::size_t i = 0; i < o.plots.size(); ++i) {
+    Figure f{o.plots[i], "", false, Source::from_cases({r.c->id})};
+    f.plot.id = r.c->id + "." + (f.plot.id.empty() ? "plot" + std::to_string(i) : f.plot.id);
+    detail += book.add(std::move(f));
+  }
+  const std::string what = o.plots.empty() ? "detail"
+                                           : "detail and " + std::to_string(o.plots.size()) +
+                                                 (o.plots.size() == 1 ? " plot" : " plots");
+  out += std::string("<tr class=\"detail") + (o.passed ? "" : " failed") +
+         "\"><td colspan=\"8\"><details class=\"case\"" + (o.passed ? "" : " open") + "><summary>" +
+         what + "</summary><div>" + detail + "</div></details></td></tr>\n";
+  return out;
+}
+
+// The table of every case, one collapsed block per evidence tier (open when one of its cases
+// failed), failures first within a tier.
 std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book) {
-  std::string out = "<h2 id=\"cases\">5. Every verification case</h2>\n";
-  out +=
+  std::string out =
       "<p>Each case measures one number and compares it with a reference under a tolerance "
       "whose reason is stated (<code>verification/</code>, the same registry that ctest "
       "runs). <i>Margin</i> is tolerance/error for ≤ comparisons and measured/bound for ≥ "
-      "ones: above 1 passes. Expand a row for the detail and the case's plots.</p>\n";
+      "ones: above 1 passes. Expand a tier for its table, a row for the detail and the case's "
+      "plots; a tier with a failed case is open.</p>\n";
   if (records.empty()) out += "<p>No case was run.</p>\n";
   for (Tier t : verification::all_tiers()) {
     std::vector<const CaseRecord*> in_tier;
     for (const auto& r : records)
       if (r.c->tier == t) in_tier.push_back(&r);
     if (in_tier.empty()) continue;
-    std::stable_partition(in_tier.begin(), in_tier.end(),
-                          [](const CaseRecord* r) { return !r->outcome.passed; });
+    const auto passed_end = std::stable_partition(
+        in_tier.begin(), in_tier.end(), [](const CaseRecord* r) { return !r->outcome.passed; });
+    const std::size_t failed = static_cast<std::size_t>(passed_end - in_tier.begin());
     const std::string tier(verification::to_string(t));
-    out += "<h3 id=\"tier-" + slug(tier) + "\">" + escape(tier) + " (" +
-           std::to_string(in_tier.size()) + " cases)</h3>\n";
+    out += std::string("<details class=\"tier\"") + (failed > 0 ? " open" : "") +
+           "><summary><h3 id=\"tier-" + slug(tier) + "\">" + escape(tier) + " (" +
+           std::to_string(in_tier.size()) + " cases" +
+           (failed > 0 ? ", <span class=\"fail\">" + std::to_string(failed) + " failed</span>"
+                       : std::string()) +
+           ")</h3></summary>\n";
     out += table_open(Source::rows_are_cases(), "data cases") +
            "<colgroup><col class=\"c-id\"><col class=\"c-num\">"
            "<col class=\"c-num\"><col class=\"c-tol\"><col class=\"c-cmp\"><col class=\"c-reason\">"
@@ -285,31 +375,8 @@ std::string cases_html(const std::vector<CaseRecord>& records, FigureBook& book)
            "<th class=\"num\">measured</th><th class=\"num\">reference</th>"
            "<th class=\"num\">tolerance</th><th>comparison</th><th>why this tolerance</th>"
            "<th class=\"num\">margin</th><th>verdict</th></tr></thead>\n<tbody>\n";
-    for (const CaseRecord* r : in_tier) {
-      const auto& o = r->outcome;
-      const std::string anchor = case_anchor(r->c->id);
-      out += std::string("<tr id=\"") + anchor + "\"" + (o.passed ? "" : " class=\"failed\"") +
-             "><td><code>" + escape(r->c->id) + "</code><br>" + escape(r->c->title) + "</td>" +
-             "<td class=\"num\">" + num_cell(o.measured, 6) + "</td><td class=\"num\">" +
-             num_cell(o.reference, 6) + "</td><td class=\"num\">" + num_cell(o.tolerance, 3) +
-             "</td><td>" + escape(std::string(verification::to_string(o.comparison))) +
-             "</td><td class=\"reason\">" + escape(r->c->reason) + "</td><td class=\"num\">" +
-             number(o.margin(), 3) + "</td><td>" + pass_fail(o.passed) + "</td></tr>\n";
-      std::string detail = "<p>" + escape(o.detail) + "</p><p>" + escape(comparison_text(o)) +
-                           "; run time " + number(r->seconds, 3) + " s.</p>\n";
-      for (std::size_t i = 0; i < o.plots.size(); ++i) {
-        Figure f{o.plots[i], "", false, Source::from_cases({r->c->id})};
-        f.plot.id = r->c->id + "." + (f.plot.id.empty() ? "plot" + std::to_string(i) : f.plot.id);
-        detail += book.add(std::move(f));
-      }
-      const std::string what = o.plots.empty() ? "detail"
-                                               : "detail and " + std::to_string(o.plots.size()) +
-                                                     (o.plots.size() == 1 ? " plot" : " plots");
-      out += std::string("<tr class=\"detail") + (o.passed ? "" : " failed") +
-             "\"><td colspan=\"8\"><details class=\"case\"" + (o.passed ? "" : " open") +
-             "><summary>" + what + "</summary><div>" + detail + "</div></details></td></tr>\n";
-    }
-    out += "</tbody></table>\n";
+    for (const CaseRecord* r : in_tier) out += case_rows(*r, book);
+    out += "</tbody></table>\n</details>\n";
   }
   return out;
 }
@@ -326,7 +393,7 @@ std::string figures_html(const std::vector<Figure>& figures, FigureBook& book) {
       out += in_grid ? "</div>\n" : "<div class=\"grid2\">\n";
       in_grid = !in_grid;
     }
-    out += book.add(f);
+    out += book.add(f, in_grid);
   }
   return out + (in_grid ? "</div>\n" : "");
 }
@@ -359,6 +426,48 @@ std::vector<std::string> delivered_row(std::vector<std::string> leading,
   leading.push_back(c && c->passed ? "<span class=\"pass\">delivers</span>"
                                    : "<span class=\"fail\">misses</span>");
   return leading;
+}
+
+// The Hunt-Crossley worked example: what each published mu(e) map delivers at each target.
+std::string hunt_crossley_maps_example_html(const SectionOptions& so) {
+  so.say("worked examples: Hunt-Crossley damping maps");
+  std::string out =
+      "<h3 id=\"example-hunt-crossley\">Hunt-Crossley with the published &mu;(e) maps</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup>(1 + &mu; dz/dt) with &mu; from each map for a "
+      "target e, put through <code>check-law --expect-cor</code> (e.g. <code>" +
+      escape(verification::hunt_crossley_map_example("hunt-crossley", 0.5).command) +
+      "</code>). Delivered e: the reference run at v<sub>0</sub> = 1 m/s (it is the same at "
+      "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
+      "miss is within 10<sup>-6</sup>.</p>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& map : closed_forms::damping_maps())
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(
+          delivered_row({escape(map.name), escape(map.formula)},
+                        verification::hunt_crossley_map_example(std::string(map.name), e_t), e_t));
+  return out + table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows,
+                     Source::from_cases({"examples.hunt-crossley.*"}));
+}
+
+// The Tsuji-type damping worked example: the delivered e, clamped and with tension.
+std::string tsuji_example_html(const SectionOptions& so) {
+  so.say("worked examples: Tsuji-type damping");
+  std::string out =
+      "<h3 id=\"example-tsuji\">Hertz with Tsuji-type damping (DEM codes)</h3>\n"
+      "<p>F = K<sub>h</sub> z<sup>3/2</sup> + &gamma;<sub>n</sub> dz/dt, &gamma;<sub>n</sub> = "
+      "-2&radic;(5/6) &beta; &radic;(S<sub>n</sub> m), S<sub>n</sub> = 2E*&radic;(R z), "
+      "&beta; = ln e<sub>t</sub>/&radic;(ln&sup2; e<sub>t</sub> + &pi;&sup2;) (LIGGGHTS "
+      "<code>model hertz</code>), once with the force clamped at F &ge; 0 (contact ends at "
+      "F = 0, LIGGGHTS <code>limitForce on</code>) and once with tension until z = 0. "
+      "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
+      "<code>examples.tsuji.*</code>).</p>\n";
+  std::vector<std::vector<std::string>> rows;
+  for (bool tension : {false, true})
+    for (double e_t : verification::example_target_cors())
+      rows.push_back(delivered_row({tension ? "tension until z = 0" : "clamped, F &ge; 0"},
+                                   verification::tsuji_example(e_t, tension), e_t));
+  return out + table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"},
+                     rows, Source::from_cases({"examples.tsuji.*"}));
 }
 
 // Contact-law worked examples: the same memoised conformance runs the example cases judge.
@@ -405,42 +514,7 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
                        place("examples.kelvin-voigt.rejected"),
                        Source::from_cases({"examples.kelvin-voigt.rejected"}));
 
-  so.say("worked examples: Hunt-Crossley damping maps");
-  out +=
-      "<h3 id=\"example-hunt-crossley\">Hunt-Crossley with the published &mu;(e) maps</h3>\n"
-      "<p>F = K<sub>h</sub> z<sup>3/2</sup>(1 + &mu; dz/dt) with &mu; from each map for a "
-      "target e, put through <code>check-law --expect-cor</code> (e.g. <code>" +
-      escape(verification::hunt_crossley_map_example("hunt-crossley", 0.5).command) +
-      "</code>). Delivered e: the reference run at v<sub>0</sub> = 1 m/s (it is the same at "
-      "every v<sub>0</sub>: &mu;v<sub>0</sub> is fixed). A map delivers its target when the "
-      "miss is within 10<sup>-6</sup>.</p>\n";
-  std::vector<std::vector<std::string>> rows;
-  for (const auto& map : closed_forms::damping_maps())
-    for (double e_t : verification::example_target_cors())
-      rows.push_back(
-          delivered_row({escape(map.name), escape(map.formula)},
-                        verification::hunt_crossley_map_example(std::string(map.name), e_t), e_t));
-  out += table({"map", "&mu;(e)", "target e", "delivered e", "miss", "verdict"}, rows,
-               Source::from_cases({"examples.hunt-crossley.*"}));
-
-  so.say("worked examples: Tsuji-type damping");
-  out +=
-      "<h3 id=\"example-tsuji\">Hertz with Tsuji-type damping (DEM codes)</h3>\n"
-      "<p>F = K<sub>h</sub> z<sup>3/2</sup> + &gamma;<sub>n</sub> dz/dt, &gamma;<sub>n</sub> = "
-      "-2&radic;(5/6) &beta; &radic;(S<sub>n</sub> m), S<sub>n</sub> = 2E*&radic;(R z), "
-      "&beta; = ln e<sub>t</sub>/&radic;(ln&sup2; e<sub>t</sub> + &pi;&sup2;) (LIGGGHTS "
-      "<code>model hertz</code>), once with the force clamped at F &ge; 0 (contact ends at "
-      "F = 0, LIGGGHTS <code>limitForce on</code>) and once with tension until z = 0. "
-      "Delivered e at v<sub>0</sub> = 1 m/s (independent of v<sub>0</sub>: case "
-      "<code>examples.tsuji.*</code>).</p>\n";
-  rows.clear();
-  for (bool tension : {false, true})
-    for (double e_t : verification::example_target_cors())
-      rows.push_back(delivered_row({tension ? "tension until z = 0" : "clamped, F &ge; 0"},
-                                   verification::tsuji_example(e_t, tension), e_t));
-  out += table({"contact end", "target e<sub>t</sub>", "delivered e", "miss", "verdict"}, rows,
-               Source::from_cases({"examples.tsuji.*"}));
-  return out;
+  return out + hunt_crossley_maps_example_html(so) + tsuji_example_html(so);
 }
 
 std::string restitution_html(const SectionOptions& so, FigureBook& book) {
@@ -501,8 +575,8 @@ std::string structure_html(const SectionOptions& so, FigureBook& book) {
   out += s.plate_properties_html;
   const PlateRegimeSection p = plate_regime_section(so);
   out += "<h3 id=\"plate-regime\">Where the infinite plate stops</h3>\n" + p.intro_html;
-  out += "<div class=\"grid2\">\n" + book.add(p.figures.at(0)) + book.add(p.figures.at(1)) +
-         "</div>\n" + book.add(p.figures.at(2)) + p.models_table_html;
+  out += book.side_by_side(p.figures.at(0), p.figures.at(1)) + book.add(p.figures.at(2)) +
+         p.models_table_html;
   return out;
 }
 
@@ -527,10 +601,10 @@ std::string speed_html(const SectionOptions& so, FigureBook& book) {
                     "within one study rather than absolute times across machines.</p>\n";
   std::size_t fig = 0;
   for (const auto& study : s.studies) {
-    out += "<h3>Work-precision: " + escape(study.label) + "</h3>\n<div class=\"grid2\">\n";
+    // one integrator per series, up to 13: each plot alone on its row, its key legible
+    out += "<h3>Work-precision: " + escape(study.label) + "</h3>\n";
     out += book.add(s.figures.at(fig++));
     out += book.add(s.figures.at(fig++));
-    out += "</div>\n";
     std::string t = table_open(Source::timing({"cross.*"})) +
                     "<thead><tr><th>integrator</th><th class=\"num\">"
                     "tolerance</th><th class=\"num\">time/impact [s]</th><th class=\"num\">"
@@ -613,8 +687,7 @@ std::string validation_html(const SectionOptions& so, FigureBook& book) {
 }
 
 std::string companions_html() {
-  return "<h2 id=\"companions\">10. Machine-readable companions</h2>\n"
-         "<p>Beside this page, in the same directory:</p><ul>\n"
+  return "<p>Beside this page, in the same directory:</p><ul>\n"
          "<li><a href=\"results.json\"><code>results.json</code></a>: "
          "<code>{\"cases\": [{\"id\", \"title\", \"tier\", \"passed\", \"measured\", "
          "\"reference\", \"tolerance\", \"reason\", \"comparison\", \"margin\", \"detail\", "
@@ -641,8 +714,14 @@ void check_out_dir(const fs::path& dir) {
                                   "': " + (ec ? ec.message() : std::string("not a directory")));
 }
 
-// The page's heading (with its provenance) and table of contents.
-std::string report_heading(const Provenance& prov) {
+// One numbered section of the page: its anchor, its heading and its body.
+struct PageSection {
+  std::string id, title, html;
+};
+
+// The page's heading (with its provenance), the table of contents and the numbered sections,
+// in the order of the list.
+std::string report_body(const Provenance& prov, const std::vector<PageSection>& sections) {
   std::string body =
       "<header><h1>ivv verification report</h1>\n<p class=\"lead\">"
       "Visco-elastoplastic impact model: verification cases, the paper's figures, "
@@ -651,18 +730,13 @@ std::string report_heading(const Provenance& prov) {
       "</code>. Every figure and table says where its numbers come from: the verification "
       "cases whose measurements it shows, or the label <i>Illustration</i> or <i>Timing, "
       "information only</i>.</p></header>\n";
-  body +=
-      "<nav class=\"toc\"><b>Contents</b><ol>"
-      "<li><a href=\"#summary\">Summary</a></li>"
-      "<li><a href=\"#paper\">The paper reproduced</a></li>"
-      "<li><a href=\"#restitution\">Restitution trends</a></li>"
-      "<li><a href=\"#examples\">Contact-law worked examples</a></li>"
-      "<li><a href=\"#cases\">Every verification case</a></li>"
-      "<li><a href=\"#speed\">Speed against error</a></li>"
-      "<li><a href=\"#dem\">DEM benchmark: Chung &amp; Ooi (2011)</a></li>"
-      "<li><a href=\"#structure\">Damping from the structure</a></li>"
-      "<li><a href=\"#validation\">Validation against measurements (synthetic example)</a></li>"
-      "<li><a href=\"#companions\">Machine-readable companions</a></li></ol></nav>\n";
+  body += "<nav class=\"toc\"><b>Contents</b><ol>";
+  for (const auto& s : sections) body += "<li><a href=\"#" + s.id + "\">" + s.title + "</a></li>";
+  body += "</ol></nav>\n";
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    body += "<section class=\"part\"><h2 id=\"" + sections[i].id + "\"" +
+            (i == 0 ? " class=\"first\"" : "") + ">" + std::to_string(i + 1) + ". " +
+            sections[i].title + "</h2>\n" + sections[i].html + "</section>\n";
   return body;
 }
 
@@ -744,18 +818,23 @@ ReportSummary render(const verification::BatteryResult& battery, const ReportOpt
   book.render(opt.threads, so);
   stages.emplace_back("plots", seconds_since(t0));
 
-  std::string body = report_heading(prov);
-  body += summary_html(records, prov, opt, section_errors, stages);
-  body += "<h2 id=\"paper\">2. The paper reproduced</h2>\n" + paper;
-  body += "<h2 id=\"restitution\">3. Restitution trends</h2>\n" + restitution;
-  body += "<h2 id=\"examples\">4. Contact-law worked examples</h2>\n" + examples;
-  body += cases;
-  body += "<h2 id=\"speed\">6. Speed against error</h2>\n" + speed;
-  body += dem;
-  body += "<h2 id=\"structure\">8. Damping from the structure</h2>\n" + structure;
-  body += "<h2 id=\"validation\">9. Validation against measurements (synthetic example)</h2>\n" +
-          validation;
-  body += companions_html();
+  // The order a reader needs: the verdict, what is verified and where the model stops
+  // applying; the results; the worked examples and the numerics; every case last (collapsed).
+  // The sections were computed above in a fixed order, which fixes the plots' ids.
+  const std::vector<PageSection> page_sections = {
+      {"summary", "Summary: what is verified, where the model stops applying",
+       summary_html(records, prov, opt, section_errors, stages)},
+      {"paper", "The paper reproduced", paper},
+      {"restitution", "Restitution trends", restitution},
+      {"structure", "Damping from the structure", structure},
+      {"validation", "Validation against measurements (synthetic example)", validation},
+      {"examples", "Contact-law worked examples", examples},
+      {"speed", "Speed against error", speed},
+      {"dem", "DEM benchmark: Chung &amp; Ooi (2011)", dem},
+      {"cases", "Every verification case", cases},
+      {"companions", "Machine-readable companions", companions_html()},
+  };
+  const std::string body = report_body(prov, page_sections);
   const std::string html = page("ivv verification report", book.resolve(body));
 
   write_files(opt.out_dir, records, book, html, so);

@@ -2,6 +2,7 @@
 // machine-readable companions, write_report's input errors, and
 // that every figure and table of a rendered report names its cases or is labelled.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "reports/companions.h"
@@ -96,6 +98,53 @@ TEST(GnuplotScript, SkipsNonFiniteAndNonPositiveOnLogAxes) {
   EXPECT_NE(gp.find("'a''s curve'"), std::string::npos);  // gnuplot quoting of '
   // the surviving points of series 0: (1, 1) and, after a gap, (3, 9)
   EXPECT_NE(gp.find("$d0 << EOD\n1 1\n\n3 9\nEOD"), std::string::npos);
+}
+
+TEST(EnhancedText, TypesetsTheLabelsOfTheCases) {
+  EXPECT_EQ(enhanced_text("lambda = m^{3/5} K_h^{2/5} v_0^{1/5} / c [-]"),
+            "λ = m^{3/5} K_{h}^{2/5} v_{0}^{1/5} / c [-]");
+  EXPECT_EQ(enhanced_text("asymptote (15/8)^(1/8) (v0/v_y)^(-1/4)"),
+            "asymptote (15/8)^{1/8} (v_{0}/v_{y})^{-1/4}");
+  EXPECT_EQ(enhanced_text("e^2 / gamma^2(eq. 21) - 1"), "e^{2} / γ^{2}(eq. 21) - 1");
+  EXPECT_EQ(enhanced_text("normalised time τ = ω0 t [-]"), "normalised time τ = ω_{0} t [-]");
+  EXPECT_EQ(enhanced_text("normalised step h = omega0 dt"), "normalised step h = ω_{0} dt");
+  EXPECT_EQ(enhanced_text("data (+-1 u)"), "data (±1 u)");
+  EXPECT_EQ(enhanced_text("relative error of F_max [-]"), "relative error of F_{max} [-]");
+}
+
+TEST(EnhancedText, LeavesNamesAndNumbersAlone) {
+  // integrator names, exponents, decimals: no letter+0 word, no Greek name
+  EXPECT_EQ(enhanced_text("odeint-dopri5, rtol 1e-12, dp45, rk4"),
+            "odeint-dopri5, rtol 1e-12, dp45, rk4");
+  EXPECT_EQ(enhanced_text("zeta = 0.10, v0 = 10 m/s"), "ζ = 0.10, v_{0} = 10 m/s");
+  EXPECT_EQ(enhanced_text("mumble alphabet"), "mumble alphabet");
+}
+
+TEST(EnhancedText, EscapesControlCharactersThatAreNotMarkup) {
+  EXPECT_EQ(enhanced_text("a@b & c~d {e} \\"), "a\\@b \\& c\\~d \\{e\\} \\\\");
+  EXPECT_EQ(enhanced_text("x_ and y^"), "x\\_ and y\\^");  // nothing to lower or raise
+}
+
+TEST(GnuplotScript, FifteenSeriesDifferInColourLineOrMarker) {
+  for (const auto style : {Series::Style::lines, Series::Style::linespoints, Series::Style::points,
+                           Series::Style::dashed}) {
+    Plot p;
+    p.id = "many";
+    for (int i = 0; i < 15; ++i)
+      p.series.push_back({std::string(1, static_cast<char>('a' + i)), {0, 1}, {0, 1}, style});
+    const std::string gp = gnuplot_script(p);
+    std::set<std::string> looks;
+    for (int i = 0; i < 15; ++i) {
+      std::string clause = "$d";  // (built in steps: GCC 12 -Wrestrict misfires on "x" + string)
+      clause += std::to_string(i);
+      clause += " using 1:2 ";
+      const auto at = gp.find(clause);
+      ASSERT_NE(at, std::string::npos) << clause;
+      const auto begin = at + clause.size();
+      looks.insert(gp.substr(begin, gp.find(" title ", begin) - begin));
+    }
+    EXPECT_EQ(looks.size(), 15u) << gp;
+  }
 }
 
 TEST(GnuplotScript, EmptyPlotIsAnError) {
@@ -285,7 +334,9 @@ std::vector<Element> sourced_elements(const std::string& html) {
 
 TEST(WriteReport, EveryFigureAndTableNamesItsCasesOrIsLabelled) {
   ReportOptions o;
-  o.out_dir = fs::temp_directory_path() / "ivv-report-sources";
+  // one directory per process: ctest runs of other build trees on this machine write the same
+  // report at the same time, and a shared directory once mixed their pages
+  o.out_dir = fs::temp_directory_path() / ("ivv-report-sources-" + std::to_string(getpid()));
   o.filter = "trend.paper.*";
   o.quick = true;
   o.threads = 2;

@@ -30,7 +30,8 @@ Figure zener_figure(const verification::StructureStudy& st) {
   for (const auto& z : st.series_solution) add(series, z.lambda, z.e);
   f.plot.series = {curve, asym, sim, series};
   f.caption =
-      "Zener's problem: the Hertz law in series with the dashpot of a large plate; e depends on "
+      "Zener's problem: the Hertz law in series with the dashpot of an infinite plate; e depends "
+      "on "
       "lambda alone. Curve: 41 simulated impacts; dashed: the first-order loss 1 &minus; a&lambda; "
       "from the undamped Hertz impact; points: four scenes with different m, R, E*, h, &rho; and "
       "v<sub>0</sub> at the same lambda, and at three lambda an independent solution of Zener's "
@@ -44,7 +45,7 @@ Figure zener_figure(const verification::StructureStudy& st) {
 Figure thickness_figure(const verification::StructureStudy& st) {
   Figure f;
   f.plot.id = "structure-thickness";
-  f.plot.title = "Paper impactor on a T300/934 plate: e against thickness";
+  f.plot.title = "Paper impactor on an infinite T300/934 plate: e against thickness";
   f.plot.x_label = "plate thickness h [mm]";
   f.plot.y_label = "coefficient of restitution e [-]";
   f.plot.log_x = true;
@@ -65,7 +66,8 @@ Figure thickness_figure(const verification::StructureStudy& st) {
       "not monotone in h (the table): on the thinnest plates the force c v<sub>0</sub> stays "
       "below the yield force, the spring stays elastic and creeps back (e between 1e-9 and "
       "1e-5 at 1 m/s); on somewhat thicker ones it yields, and the permanent set with an "
-      "overdamped unloading captures the sphere (e = 0).";
+      "overdamped unloading captures the sphere (e = 0). All of it on an infinite plate: a "
+      "finite one may give the energy back (the note above).";
   f.source = Source::from_cases({"structure.laminate.*"});
   return f;
 }
@@ -104,8 +106,9 @@ std::string plate_properties(const verification::StructureStudy& st) {
   for (const auto& r : st.thickness_rows)
     rows.push_back({number(r.thickness * 1e3, 4), number(r.D_star, 5), number(r.c, 5),
                     number(r.zeta, 4), number(r.e_1, 6), number(r.e_5, 6)});
-  return s + table({"h [mm]", "D* [N m]", "c [N s/m]", "&zeta;", "e (1 m/s)", "e (5 m/s)"}, rows,
-                   Source::from_cases({"structure.laminate.*"}));
+  return s + table({"h [mm]", "D* [N m]", "c [N s/m]", "&zeta;", "e (1 m/s, infinite plate)",
+                    "e (5 m/s, infinite plate)"},
+                   rows, Source::from_cases({"structure.laminate.*"}));
 }
 
 }  // namespace
@@ -116,6 +119,21 @@ StructureSection structure_section(const SectionOptions& so) {
   StructureSection out;
   out.figures = {zener_figure(st), thickness_figure(st)};
   out.intro_html =
+      "<div class=\"note\" id=\"infinite-plate\"><p><b>Zener's curve, the similarity scenes "
+      "and the thickness study below are the infinite-plate idealisation.</b> The plate's "
+      "dashpot c = 8 &radic;(&rho; h D*) is the "
+      "energy that bending waves carry away from an <i>infinite</i> plate, never to return: it "
+      "holds while no wave comes back from the plate's edges during the contact. So the e = 0 "
+      "of the thin plates below (capture) is the infinite plate's answer. A finite plate of "
+      "the same thickness keeps that energy in its modes and may give it back: the ball may "
+      "rebound, after one contact or several. A scene whose <code>[structure]</code> gives "
+      "<code>length_x</code> and <code>length_y</code> (with <code>edges</code>) is such a "
+      "finite plate: ivv then integrates its modes and uses no dashpot. The cases "
+      "<code>plate.infinite-limit.*</code> check that a plate large enough for no wave to "
+      "return reproduces the infinite plate's e, <code>plate.cross.convolution.*</code> check "
+      "small plates that rebound with repeated contacts, and <a href=\"#plate-regime\">Where "
+      "the infinite plate stops</a> (the end of this section) maps where a finite plate departs "
+      "from the idealisation.</p></div>\n"
       "<p>The dashpot derived from the struck structure (paper, after eq. 4): a plate's "
       "c = 8 &radic;(&rho; h D), a bar's c = A &radic;(E &rho;), the two in series. For the Hertz "
       "law it is Zener's (1941) problem with one group, &lambda; = m<sup>3/5</sup> "

@@ -19,6 +19,7 @@ packages=(
   libmuparser-dev                     # expression contact laws
   gnuplot-nox                         # report plots (SVG terminal)
   chromium fonts-dejavu-core          # the report's rendering test (headless), with a font
+  zlib1g-dev                          # which decodes its screenshots
   openmpi-bin libopenmpi-dev          # `mpirun -np N ivv sweep` (and its 2-rank test)
   pybind11-dev python3-dev python3-numpy  # the Python module `import ivv` (python/)
   python3-pytest                      # its tests
