@@ -9,7 +9,10 @@
 // Static checks (no integrator), on the scene's Hertz scales z_ref = (5 m v0^2/(4 K_h))^{2/5}
 // at the grid's largest v0:
 //   static.onset            F(0, zdot = v0) = 0 on first loading: the force is continuous at
-//                           impact (a Kelvin-Voigt law k z + c zdot is not: F(0) = c v0)
+//                           impact (a Kelvin-Voigt law k z + c zdot is not: F(0) = c v0); or,
+//                           for a law that declares its onset force (an adhesive jump-in,
+//                           LawProbe::onset_force), F(0) = the declared force, and
+//                           static.continuity holds every other point to continuity
 //   static.attractive       F >= 0 on loading and on unloading above the permanent set (a
 //                           failure unless the law allows tension; reported either way)
 //   static.breakpoints      F continuous at each declared kink (segment_end)
@@ -46,7 +49,13 @@
 //   dynamic.monotone_v0     e non-increasing in v0            (when claimed)
 //   dynamic.monotone_damping e non-increasing in the damping  (when claimed)
 //   dynamic.low_speed       e -> 1 as v0 -> 0                 (when claimed)
-//   dynamic.expected_cor    e against the COR the law claims  (when claimed), miss reported
+//   dynamic.increasing_v0   e non-decreasing in v0            (when claimed, adhesive laws)
+//   dynamic.captured_below  captured below a stated speed     (when claimed)
+//   dynamic.expected_cor    e against the COR the law claims  (when claimed), miss reported; a
+//                           captured run against its interval [0, e_bound]
+// Before a dynamic check blames the law, each run over its tolerance is repeated tighter
+// (detail::Rechecks); an excess gone there is an IntegratorNote under the verdict, not a
+// failure; one that persists fails the law.
 #pragma once
 
 #include <cmath>
