@@ -274,7 +274,10 @@ TEST(Conformance, AJkrTypeLawIsCapturedInItsWellWithoutADashpot) {
   EXPECT_TRUE(check(r, "dynamic.increasing_v0").passed);
   int captured = 0;
   for (const CorPoint& p : r.cor)
-    if (p.status == "captured") ++captured, EXPECT_EQ(*p.e_bound, 0.0) << p.v0;
+    if (p.status == "captured") {
+      ++captured;
+      EXPECT_EQ(*p.e_bound, 0.0) << p.v0;
+    }
   EXPECT_EQ(captured, 2) << r.full();
   // the claim that the well captures below 0.5 mm/s is wrong at 1 mm/s
   claims.captured_below = 5e-4;
