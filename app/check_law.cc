@@ -21,6 +21,9 @@ struct CheckLawFlags {
   std::optional<double> cor_tolerance;
   bool elastic_at_low_speed = false;
   bool no_monotone = false;
+  bool increasing_in_v0 = false;
+  std::optional<double> captured_below;
+  std::optional<std::string> onset_force;  // --onset-force EXPR (expression laws)
   std::string v0_grid, zeta_grid, c_grid;
   bool json = false;
   std::string report_dir;
@@ -40,7 +43,17 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
   if (!f.force && !c.law_given && f.params.empty() && !f.hc_k && !f.hc_mu)
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
-  const SimulationRequest req = to_request(to_options(f));
+  RequestOptions options = to_options(f);
+  if (c.onset_force) {
+    if (!f.force)
+      throw InputError("--onset-force",
+                       "declares the onset force of an expression law (--force); a C++ law "
+                       "declares its own (the member onset_force())");
+    options.expression.onset_force = *c.onset_force;
+    if (c.onset_force->find_first_not_of(" \t") == std::string::npos)
+      throw InputError("--onset-force", "is empty; give the force [N] at z = 0, e.g. '-Fad'");
+  }
+  const SimulationRequest req = to_request(options);
   conformance::Grid grid = conformance::default_grid(req.scene);
   grid.options = req.options;
   if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0", false);
@@ -56,6 +69,15 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
   conformance::Claims claims;
   claims.elastic_at_low_speed = c.elastic_at_low_speed;
   claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping = !c.no_monotone;
+  if (c.increasing_in_v0) {  // replaces the default claim that e falls with v0
+    claims.cor_nonincreasing_in_v0 = false;
+    claims.cor_nondecreasing_in_v0 = true;
+  }
+  if (c.captured_below) {
+    if (!(*c.captured_below > 0 && std::isfinite(*c.captured_below)))
+      throw InputError("--captured-below", "a speed in m/s, finite and > 0");
+    claims.captured_below = c.captured_below;
+  }
   if (!c.expect_cor.empty()) {
     claims.expected_cor =
         compile_cor_claim(c.expect_cor, req.parameters, req.scene, oracles::expression_functions());
@@ -82,6 +104,7 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
       j["law"]["force"] = req.expression.force;
       j["law"]["unload"] = req.expression.unload;
       j["law"]["allow_tension"] = req.expression.allow_tension;
+      if (c.onset_force) j["law"]["onset_force"] = *c.onset_force;
     }
     j["law"]["scene"] = req.scene.name;
     if (claims.expected_cor) j["law"]["expect_cor"] = c.expect_cor;
@@ -119,12 +142,21 @@ void CheckLaw::add_flags(CLI::App& cmd) {
   cmd.add_option("--expect-cor", check_.expect_cor,
                  "the COR the law is meant to deliver: an expression in v0, the scene's "
                  "constants and --param names");
+  cmd.add_option("--onset-force", check_.onset_force,
+                 "expression law: the force [N] the law intends at z = 0 on first loading (an "
+                 "adhesive jump-in, e.g. '-Fad'); static.onset then checks F(0) against it");
   cmd.add_option("--cor-tolerance", check_.cor_tolerance,
                  "allowed |e - expected| (default 1e-9: 10x the reference's error of e)");
   cmd.add_flag("--elastic-at-low-speed", check_.elastic_at_low_speed,
                "claim e -> 1 as v0 -> 0 (checked)");
   cmd.add_flag("--no-monotone", check_.no_monotone,
                "do not claim that e falls with v0 and with damping");
+  cmd.add_flag("--cor-increasing-in-v0", check_.increasing_in_v0,
+               "claim e non-decreasing in v0 (adhesive laws: slow impacts captured), in place of "
+               "the default claim that e falls with v0 (checked)");
+  cmd.add_option("--captured-below", check_.captured_below,
+                 "claim: captured (e = 0) at every grid velocity below V [m/s], and without a "
+                 "dashpot rebounding at every one at or above it (checked)");
   cmd.add_option("--v0", check_.v0_grid,
                  "velocity grid [m/s], LO:HI:N or a,b,c (default: 7 points over three decades "
                  "around the scene's v0)");

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "app/cli_args.h"
+#include "oracles/expression_functions.h"
 #include "scene/input_error.h"
 
 namespace ivv::app {
@@ -38,7 +39,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_dampin
   auto* force = cmd.add_option(
       "--force", f.force,
       "expression law: loading force [N] in z, zdot, zmax, m, R, E_star, K_h, z_y, K_y, v0 and "
-      "--param names (muParser), e.g. 'K_h*z^1.5'");
+      "--param names (muParser), and the published formulas of `ivv check-law --functions`, "
+      "e.g. 'K_h*z^1.5'");
   force->excludes(law);
   cmd.add_option("--unload", f.unload,
                  "expression law: unloading force [N] after dz/dt = 0 (zmax = z_m); default: "
@@ -90,6 +92,7 @@ RequestOptions to_options(const ModelFlags& f) {
     if (*text && text->value().find_first_not_of(" \t") == std::string::npos)
       throw InputError(flag, "is empty; give the force [N] as an expression, e.g. 'K_h*z^1.5'");
   o.expression = {f.force.value_or(""), f.unload.value_or(""), f.allow_tension};
+  o.expression.functions = oracles::expression_functions();  // as in --expect-cor
   o.integrator = f.integrator;
   o.model = f.model;
   o.rtol = number(f.rtol, "--rtol");

@@ -15,9 +15,20 @@
 //    solution the force is still (barely) positive and the integration error has exceeded it.
 //    When w is within the accumulated error bound, the impact is on the capture boundary:
 //    e_bound = that bound. Beyond it the driver reports a failure, never a negative COR.
-// Capture needs dissipation: without it the unloading branch is conservative, the rebound speed
-// is sqrt(2 U(z_m)) > 0, and criteria 1 and 2 are not asked (a bound below capture_cor there
-// would be round-off in U, not physics).
+// 4. In an attractive well, after an unloading step, for a law that allows tension and states
+//    its separation work (law.h; ImpactSystem::separation_energy): the impactor could reach
+//    separation (z = 0) only with 1/2 w_sep^2 <= E = 1/2 w^2 + S(z). When E < -(the
+//    accumulated error bound + the quadrature's allowance), it never separates: e = 0 exactly,
+//    e_bound = 0 (dashpot or none). Without a dashpot E is conserved on the unloading branch,
+//    so the well decides at the first unloading step; with one, E only falls.
+// 5. Turned back in the well, no dashpot: E within that allowance of zero (criterion 4 cannot
+//    decide), and the impactor is moving inwards again on the unloading branch (w > 0 after its
+//    maximum displacement; without a dashpot z = alpha, so z rises: the spring would reload). It
+//    failed to reach separation once and its energy is conserved: captured, e_bound =
+//    sqrt(2 max(E + allowance, 0)), the rebound the uncertainty in E could still hide.
+// Capture needs dissipation or a well: without either the unloading branch is conservative, the
+// rebound speed is sqrt(2 U(z_m)) > 0, and criteria 1 and 2 are not asked (a bound below
+// capture_cor there would be round-off in U, not physics).
 #pragma once
 
 #include <algorithm>
@@ -50,10 +61,31 @@ std::optional<double> energy_capture(const System& sys, const typename System::s
   return std::max(static_cast<double>(sqrt(bound2 > 0 ? bound2 : T(0))), opt.capture_cor);
 }
 
-// Criteria 1 then 2 after an unloading step ending at x; nullopt for a conservative system.
+// Relative allowance for the quadrature of the separation work (the expression law's adaptive
+// Gauss-Kronrod is asked for 1e-12; 1e-9 of the energies involved leaves a factor 1000).
+inline constexpr double kSeparationWorkAllowance = 1e-9;
+
+// Criteria 4 and 5: the attractive well. e_bound (0 for criterion 4), or nullopt.
+template <class System>
+std::optional<double> well_capture(const System& sys, const typename System::state_type& x,
+                                   long steps, const IntegratorOptions& opt) {
+  const std::optional<double> E = sys.separation_energy(x);
+  if (!E) return std::nullopt;
+  const double w = static_cast<double>(x[System::W]);
+  const double allowance = accumulated_error_bound(steps, opt) +
+                           kSeparationWorkAllowance * (0.5 * w * w + sys.pull_off_work + 1.0);
+  if (*E < -allowance) return 0.0;
+  if (!System::has_dashpot && w > allowance) return std::sqrt(2.0 * std::max(*E + allowance, 0.0));
+  return std::nullopt;
+}
+
+// Criteria 4 and 5, then 1 and 2, after an unloading step ending at x; nullopt for a
+// conservative system without a well.
 template <class System>
 std::optional<double> capture_after_step(const System& sys, const typename System::state_type& x,
                                          long steps, const IntegratorOptions& opt) {
+  if (opt.exact_capture)
+    if (const auto well = well_capture(sys, x, steps, opt)) return well;
   if constexpr (System::has_dashpot || System::rate_dependent) {  // something dissipates
     if (const auto exact = exact_capture(sys, x, steps, opt)) return exact;
     return energy_capture(sys, x, opt);

@@ -29,9 +29,13 @@ void settle_captured(ImpactResult& r, const Scene& scene, const CaptureInputs& i
   // everything still recoverable at capture is dissipated; the residual is left as measured
   EnergyLedger& led = r.energy;
   const double remaining = led.final + led.stored;  // 1/2 m* w_c^2 + U(z_c)
-  (dashpot ? led.viscous : led.plastic) += remaining;
+  if (in.bound_in_well) {
+    led.stored = remaining;  // the bound oscillation about z_f keeps it
+  } else {
+    (dashpot ? led.viscous : led.plastic) += remaining;
+    led.stored = 0.0;
+  }
   led.final = 0.0;
-  led.stored = 0.0;
 }
 
 }  // namespace ivv

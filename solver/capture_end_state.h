@@ -31,6 +31,10 @@ struct CaptureInputs {
   double effective_mass = 0.0;  // m* [kg]
   double dashpot = 0.0;         // c [N s/m]; +inf without a dashpot
   bool turned_back = false;     // the impactor reached alpha' = 0 before capture
+  // Captured in an attractive well with nothing to dissipate (no dashpot, a rate-independent
+  // law): the energy still recoverable at capture stays in the contact as a bound oscillation
+  // (ledger: stored), instead of ending in a dashpot.
+  bool bound_in_well = false;
 };
 
 // Rewrites a captured result `r` (its numbers at the moment capture was declared: t_contact,

@@ -511,6 +511,7 @@ class ImpactDriver {
         }
         run_.tau_z_max = te;
         law_begin_unloading(sys_.law, sys_.branch, T(sys_.length * sys_.z(xe)));
+        record_pull_off_work();
         break;
       case EventAction::record_alpha_max:
         run_.has_max_displacement = true;
@@ -527,6 +528,14 @@ class ImpactDriver {
       case EventAction::end_contact:
         break;
     }
+  }
+
+  // The depth of the unloading branch's attractive well, -S(z_f) (law.h: separation_work),
+  // computed once where unloading begins (capture.h, criterion 4); 0 without a well.
+  void record_pull_off_work() {
+    const double z_f = static_cast<double>(sys_.branch.z_perm);
+    const std::optional<double> S = separation_work(sys_.law, sys_.branch, z_f);
+    sys_.pull_off_work = S ? std::max(0.0, -*S * sys_.inverse_force_scale / sys_.length) : 0.0;
   }
 
   // F = 0 at (te, xe): a rebound, or, with the impactor still approaching, grazing capture

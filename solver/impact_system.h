@@ -62,6 +62,10 @@ struct ImpactSystem {
   double inverse_force_scale = 1.0;  // 1 / force_scale [1/N]: a product, not a division, per
                                      // right-hand-side evaluation
   double two_zeta = 0.0;             // 2 zeta (Dashpot only)
+  // The pull-off work of the unloading branch, -int_0^{z_f} F ds (the depth of the attractive
+  // well below zero force), normalised by m v0^2; set by the driver when unloading begins, for
+  // a law that allows tension and states its separation_work (law.h); 0: no well.
+  double pull_off_work = 0.0;
   mutable long rhs_evaluations = 0;
 
   static state_type initial_state() {
@@ -182,6 +186,24 @@ struct ImpactSystem {
       const double w = static_cast<double>(x[W]);
       if (!(u > 0 && w > 0)) return std::nullopt;
       return (w - s1 * u) / (1 + s1);
+    }
+  }
+
+  // The energy the impactor would have on reaching separation (z = 0) along the unloading
+  // branch, at most 1/2 w^2 + S(z) with S = separation_work (law.h), normalised by m v0^2: the
+  // dashpot only removes energy (d/dt (1/2 m alpha'^2 + U(z)) = -F^2/c), and without one it is
+  // conserved. nullopt where there is no attractive well (pull_off_work = 0) or the law states
+  // no separation work.
+  std::optional<double> separation_energy(const state_type& x) const {
+    if constexpr (Law::rate_dependent) {
+      return std::nullopt;
+    } else {
+      if (!(pull_off_work > 0)) return std::nullopt;
+      const std::optional<double> S =
+          separation_work(law, branch, length * static_cast<double>(z(x)));
+      if (!S) return std::nullopt;
+      const double w = static_cast<double>(x[W]);
+      return 0.5 * w * w + *S * inverse_force_scale / length;
     }
   }
 

@@ -99,6 +99,20 @@ class LawDomainError : public std::runtime_error {
 //                                             loading for 0 <= z <= z_end, so the driver may
 //                                             start the integration from the onset series
 //                                             (solver/onset_series.h); rate-independent laws only
+//   onset_force()            [N]              std::optional<double> (or double): the force the
+//                                             law intends at z = 0 on first loading, an adhesive
+//                                             law's jump-in (DMT: -F_ad). A declaration for the
+//                                             conformance check static.onset, which then holds
+//                                             F(0) to it instead of 0; the driver does not read it
+//                                             (onset is the initial state whatever F(0) is)
+//   separation_work(h, z)    [J]              std::optional<double>: for a law that allows
+//                                             tension, int_0^z F(s, 0) ds on the unloading branch
+//                                             h, the work the contact force does on the impactor
+//                                             as the spring relaxes from z to separation at
+//                                             z = 0 (negative where an attractive well takes more
+//                                             than the spring returns); nullopt where not known.
+//                                             Lets the driver decide capture in the well without
+//                                             a dashpot (capture.h, criterion 4)
 //
 // One concept per member, so that assert_contact_law (below) names the member at fault in the
 // first line of a compile error. An optional member is detected by a call with the arguments
@@ -270,6 +284,27 @@ std::optional<HertzianOnset> hertzian_onset(const L& law) {
     return law.hertzian_onset();
   else
     return std::nullopt;
+}
+
+// The law's declared onset force (see above), else nullopt.
+template <class L>
+std::optional<double> declared_onset_force(const L& law) {
+  if constexpr (requires { law.onset_force(); })
+    return std::optional<double>(law.onset_force());
+  else
+    return std::nullopt;
+}
+
+// The law's separation_work(h, z) when it declares one and allows tension (see above), else
+// nullopt.
+template <class L, class H>
+std::optional<double> separation_work(const L& law, const H& h, double z) {
+  if constexpr (requires { law.separation_work(h, z); }) {
+    if (!law_allows_tension(law)) return std::nullopt;
+    return law.separation_work(h, z);
+  } else {
+    return std::nullopt;
+  }
 }
 
 // The law's unloading_slope_floor(h) when it declares one (see above), else nullopt.

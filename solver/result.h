@@ -117,6 +117,11 @@ struct ImpactResult {
   // A fixed target (half-space) stays at 0 and the impactor leaves at rebound_velocity.
   double impactor_velocity_after = 0.0;
   double target_velocity_after = 0.0;
+  // The pull-off work of the unloading branch, -int_0^{z_f} F ds [J]: the depth of an attractive
+  // well below zero force (a law that allows tension and states its separation work, law.h),
+  // computed once where unloading begins; 0 without a well. An impactor whose remaining energy
+  // cannot climb out of it is captured (solver/capture.h, criterion 4).
+  double pull_off_work = 0.0;
   double impulse = 0.0;              // int F dt [N s]
   double impulse_compression = 0.0;  // int_0^{t_c} F dt [N s]
   EnergyLedger energy;

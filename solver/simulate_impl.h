@@ -58,6 +58,7 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
     r.t_alpha_max = r.t_contact;
   }
   r.impulse = d(x[System::J]) * momentum;
+  r.pull_off_work = sys.pull_off_work * E;
   if (run.status == ImpactStatus::failed) return r;
 
   const double w_f = d(x[System::W]);
@@ -88,7 +89,11 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
     // m* omega/c = two_zeta with omega = 1/Ts, so c = m*/(two_zeta Ts)
     const double c =
         System::has_dashpot ? m / (sys.two_zeta * Ts) : std::numeric_limits<double>::infinity();
-    settle_captured(r, scene, {m, c, run.has_max_displacement});
+    // without a dashpot a rate-independent law is captured only by its well (capture.h): the
+    // impactor keeps what it has as a bound oscillation, not dissipated
+    settle_captured(
+        r, scene,
+        {m, c, run.has_max_displacement, !System::has_dashpot && !System::rate_dependent});
   }
   return r;
 }

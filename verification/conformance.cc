@@ -109,6 +109,13 @@ ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims,
   std::sort(grid.zetas.begin(), grid.zetas.end());
   std::sort(grid.dashpots.begin(), grid.dashpots.end(), std::greater<>());
   require_cor_claim_in_range(claims, grid.velocities);  // bad input before any run
+  if (claims.cor_nondecreasing_in_v0 && claims.cor_nonincreasing_in_v0)
+    throw InputError("--cor-increasing-in-v0",
+                     "e cannot be claimed both rising and falling with v0: the rising claim "
+                     "replaces the default falling one");
+  if (claims.captured_below &&
+      !(*claims.captured_below > 0 && std::isfinite(*claims.captured_below)))
+    throw InputError("--captured-below", "a speed > 0 m/s, finite");
   ConformanceResult result;
   result.law = law.name;
   result.description = law.description;

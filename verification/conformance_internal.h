@@ -9,8 +9,11 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -78,6 +81,27 @@ struct Run {
 // Every impact of the grid (the dampings a rate-dependent law cannot take are left out).
 std::vector<Run> run_grid(const LawUnderTest& law, const Grid& grid);
 
+// The runs of the grid repeated tighter, before a dynamic check blames the law for a difference
+// (conformance.h: IntegratorNote): an integrator at 1/1000 of the grid's rtol and atol (not
+// below 1e-13 and 1e-15, where double rounding takes over), the reference at a tolerance ten
+// times tighter (mp50 at 1e-4 of its own; the double-precision reference, dp45 at rtol 1e-13,
+// at 1e-14). Each run is repeated once, whichever checks ask (memoised).
+class Rechecks {
+ public:
+  Rechecks(const LawUnderTest& law, const Grid& grid) : law_(law), grid_(grid) {}
+  const ImpactResult& integrator(const Run& r, IntegratorKind k);
+  const ImpactResult& reference(const Run& r);
+  // "odeint-dopri5 at rtol 1e-13, atol 1e-15 against dp45 at rtol 1e-14"
+  std::string settings(IntegratorKind k) const;
+  IntegratorOptions tight_options(IntegratorKind k) const;
+  IntegratorOptions tight_reference_options() const;
+
+ private:
+  const LawUnderTest& law_;
+  const Grid& grid_;
+  std::map<std::tuple<double, double, int>, ImpactResult> runs_;  // (v0, c, integrator)
+};
+
 // The static checks on the scene (velocity set to the grid's largest), in order; z_scan [m] is
 // how far the discontinuity scan goes (beyond the largest z_m of the grid).
 void static_checks(const LawUnderTest& law, const Scene& scene, double v_hi, double z_scan,
@@ -86,5 +110,13 @@ void static_checks(const LawUnderTest& law, const Scene& scene, double v_hi, dou
 // The dynamic checks judged on the runs, in order.
 void dynamic_checks(const LawUnderTest& law, const Claims& claims, const Grid& grid,
                     const std::vector<Run>& runs, ConformanceResult& result);
+
+// "dp45 at v0 = 0.0001 m/s, no dashpot"
+std::string run_label(const Run& r, std::string_view who);
+
+// The claims on the trend of e (captured_below, cor_nondecreasing_in_v0), judged on the
+// reference runs (conformance_claims.cc).
+void adhesive_claim_checks(const Claims& claims, const Grid& grid, const std::vector<Run>& runs,
+                           ConformanceResult& result);
 
 }  // namespace ivv::conformance::detail

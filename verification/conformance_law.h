@@ -56,6 +56,7 @@ class TypedProbe final : public LawProbe {
   bool stored_energy_is_quadrature() const override {
     return !law_supports_scalar<Law, long double>;  // expression laws integrate it themselves
   }
+  std::optional<double> onset_force() const override { return declared_onset_force(law_); }
   void reset() override {
     h_ = {};
     segments_ = 0;

@@ -21,6 +21,8 @@ LawUnderTest registry_law(const SimulationRequest& request) {
       t.description += "; unloading F = " + request.expression.unload;
     t.description += request.expression.allow_tension ? "; tension allowed, contact ends at z = 0"
                                                       : "; clamped F >= 0, contact ends at F = 0";
+    if (!request.expression.onset_force.empty())
+      t.description += "; declared onset force F(0) = " + request.expression.onset_force;
     t.allows_tension = request.expression.allow_tension;
     t.runs_in_reference = false;
     t.rate_dependent = detail::compile_expression_law(request, derive(request.scene))->uses_rate();

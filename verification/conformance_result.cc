@@ -76,6 +76,7 @@ std::string ConformanceResult::brief() const {
   for (const Check& c : checks) failed += !c.passed;
   os << "law " << law << ": " << (passed() ? "PASS" : "FAIL") << " (" << checks.size() - failed
      << " of " << checks.size() << " checks passed, " << skipped.size() << " skipped";
+  if (!notes.empty()) os << ", " << notes.size() << " integrator-accuracy note(s)";
   if (failed) {
     os << "; failed:";
     for (const Check& c : checks)
@@ -85,12 +86,64 @@ std::string ConformanceResult::brief() const {
   return os.str();
 }
 
+std::string IntegratorNote::line() const {
+  std::ostringstream os;
+  os << "note  " << std::left << std::setw(26) << check << " " << integrator
+     << " at v0 = " << fmt(v0) << " m/s, " << damping << ": " << detail << " (measured "
+     << fmt(error, 4) << ", tolerance " << fmt(tolerance, 4);
+  if (std::isfinite(error_tight)) os << "; repeated tighter " << fmt(error_tight, 4);
+  os << ")";
+  return os.str();
+}
+
+std::string ConformanceResult::notes_text() const {
+  if (notes.empty()) return "";
+  std::ostringstream os;
+  os << "integrator accuracy, not the law's (" << notes.size()
+     << " note(s): a difference the integrator's tolerance explains, gone when the run was "
+        "repeated tighter, or a capture bound looser than the check's tolerance):\n";
+  for (const IntegratorNote& n : notes) os << "  " << n.line() << "\n";
+  return os.str();
+}
+
+std::string ConformanceResult::cor_grid() const {
+  std::vector<std::string> dampings;
+  for (const CorPoint& c : cor)
+    if (std::find(dampings.begin(), dampings.end(), c.damping_label()) == dampings.end())
+      dampings.push_back(c.damping_label());
+  std::size_t width = 0;
+  for (const std::string& d : dampings) width = std::max(width, d.size());
+  std::ostringstream os;
+  for (const std::string& d : dampings) {
+    os << "  " << std::left << std::setw(static_cast<int>(width)) << d << " ";
+    bool first = true;
+    for (const CorPoint& c : cor) {
+      if (c.damping_label() != d) continue;
+      os << (first ? " " : ", ") << fmt(c.v0, 4) << ": ";
+      first = false;
+      if (!c.e)
+        os << "failed";
+      else if (c.e_bound && c.status == "captured")
+        os << "0 (captured, e <= " << fmt(*c.e_bound, 2) << ")";
+      else
+        os << fmt(*c.e, 8);
+    }
+    os << "\n";
+  }
+  return os.str();
+}
+
 std::string ConformanceResult::full() const {
   std::ostringstream os;
   os << "law " << law << ": " << description << "\n";
   for (const Check& c : checks) os << "  " << c.line() << "\n";
   for (const Skipped& s : skipped)
     os << "  SKIP  " << std::left << std::setw(26) << s.id << " " << s.why << "\n";
+  if (!cor.empty())
+    os << "e(v0) of the reference runs, per damping (v0 [m/s]: e), as the trend checks used "
+          "it:\n"
+       << cor_grid();
+  os << notes_text();
   os << brief() << "\n";
   return os.str();
 }
@@ -195,7 +248,18 @@ nlohmann::json to_json(const ConformanceResult& result) {
                    {"e_bound", opt(c.e_bound)},
                    {"expected", opt(c.expected)},
                    {"status", c.status}});
+  nlohmann::json notes = nlohmann::json::array();
+  for (const IntegratorNote& n : result.notes)
+    notes.push_back({{"check", n.check},
+                     {"integrator", n.integrator},
+                     {"v0", n.v0},
+                     {"damping", n.damping},
+                     {"error", num(n.error)},
+                     {"tolerance", num(n.tolerance)},
+                     {"error_tight", num(n.error_tight)},
+                     {"detail", n.detail}});
   return {{"verdict", result.passed() ? "pass" : "fail"},
+          {"integrator_notes", notes},
           {"brief", result.brief()},
           {"law", {{"name", result.law}, {"description", result.description}}},
           {"checks", checks},

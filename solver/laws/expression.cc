@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -139,6 +140,25 @@ Constants scene_constants(const Scene& scene, const DerivedParameters& p,
   return constants;
 }
 
+// The functions of `functions` defined on `parser` (one or two arguments each).
+void define_functions(mu::Parser& parser, std::span<const ExpressionFunction> functions) {
+  for (const ExpressionFunction& f : functions) {
+    if (f.one) parser.DefineFun(std::string(f.name), f.one);
+    if (f.two) parser.DefineFun(std::string(f.name), f.two);
+  }
+}
+
+// "; functions hc_cor(u0) ..." for error messages ("" without functions).
+std::string function_names(std::span<const ExpressionFunction> functions) {
+  std::string known;
+  if (!functions.empty()) known += "; functions";
+  for (const ExpressionFunction& f : functions) {
+    known += ' ';  // two appends: `" " + std::string(...)` trips GCC 12's -Wrestrict
+    known += f.signature;
+  }
+  return known;
+}
+
 std::string known_names(const std::string& variables, const Constants& constants) {
   std::string known = "variables " + variables + "; constants";
   for (const auto& c : constants) known += " " + c.first;
@@ -153,7 +173,7 @@ ExpressionError::ExpressionError(std::string field, const std::string& expressio
       position_(position) {}
 
 struct CompiledExpressions::Parsers {
-  mu::Parser load, unload;
+  mu::Parser load, unload, onset;
   double z = 0, zdot = 0, zmax = 0;
   std::string known;  // the names an expression may use, for error messages
 };
@@ -165,12 +185,16 @@ CompiledExpressions::CompiledExpressions(const ExpressionLawSpec& spec,
   if (spec.force.empty())
     throw InputError("--force", "the expression law needs a force expression, e.g. 'K_h*z^1.5'");
   Parsers& P = *parsers_;
-  const Constants constants = scene_constants(scene, p, parameters, {"z", "zdot", "zmax"});
+  std::set<std::string> reserved = {"z", "zdot", "zmax"};
+  for (const ExpressionFunction& f : spec.functions) reserved.insert(std::string(f.name));
+  const Constants constants = scene_constants(scene, p, parameters, reserved);
   // Hertz scales of the scene: z_ref = (5 m v0^2 / (4 K_h))^{2/5}, F_ref = K_h z_ref^{3/2}.
   v_ref_ = scene.velocity;
   z_ref_ = std::pow(5.0 * p.effective_mass * v_ref_ * v_ref_ / (4.0 * p.K_h), 0.4);
   k_ref_ = p.K_h * std::sqrt(z_ref_);
-  P.known = known_names("z, zdot, zmax", constants);
+  P.known = known_names("z, zdot, zmax", constants) + function_names(spec.functions);
+  for (mu::Parser* parser : {&P.load, &P.unload, &P.onset})
+    define_functions(*parser, spec.functions);
   const std::vector<std::pair<std::string, double*>> variables = {
       {"z", &P.z}, {"zdot", &P.zdot}, {"zmax", &P.zmax}};
   P.z = P.zmax = z_ref_;  // a point inside contact for the trial evaluation
@@ -180,6 +204,29 @@ CompiledExpressions::CompiledExpressions(const ExpressionLawSpec& spec,
     uses_rate_ =
         setup_parser(P.unload, spec.unload, "--unload", variables, constants, P.known, "zdot") ||
         uses_rate_;
+  has_onset_ = spec.onset_force.find_first_not_of(" \t") != std::string::npos;
+  if (!spec.onset_force.empty() && !has_onset_)
+    throw InputError("--onset-force", "an empty expression; give the force at z = 0, e.g. '-Fad'");
+  if (has_onset_)
+    setup_parser(P.onset, spec.onset_force, "--onset-force", variables, constants, P.known, "zdot");
+}
+
+double CompiledExpressions::pull_off_work(double z_max,
+                                          const std::function<double()>& compute) const {
+  if (!pull_off_ || pull_off_->first != z_max) pull_off_ = std::pair{z_max, compute()};
+  return pull_off_->second;
+}
+
+std::optional<double> CompiledExpressions::onset_force() const {
+  if (!has_onset_) return std::nullopt;
+  Parsers& P = *parsers_;
+  P.z = P.zmax = 0.0;
+  P.zdot = v_ref_;
+  try {
+    return P.onset.Eval();
+  } catch (const mu::Parser::exception_type&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 CompiledExpressions::~CompiledExpressions() = default;
@@ -260,6 +307,25 @@ double ExpressionLaw<Rate>::stored_energy(const Branch<double>& h, double z) con
   return boost::math::quadrature::gauss<double, 20>::integrate(F, lo, z);
 }
 
+template <bool Rate>
+std::optional<double> ExpressionLaw<Rate>::separation_work(const Branch<double>& h,
+                                                           double z) const {
+  if (h.phase == Phase::loading) return std::nullopt;
+  if (!(z > 0)) return 0.0;
+  // S(z) = -W + int_{z_f}^{z} F with the pull-off work W = -int_0^{z_f} F: each integral has
+  // one sign (F <= 0 below the set z_f, >= 0 above), so the relative tolerance means something
+  // (one quadrature over a sign change near S = 0 never met it and subdivided to its depth);
+  // W is computed once per unloading branch.
+  auto F = [&](double s) { return expr->unloading(s, 0.0, h.z_max); };
+  auto integral = [&](double a, double b) {
+    return a < b ? boost::math::quadrature::gauss_kronrod<double, 31>::integrate(F, a, b, 10, 1e-12)
+                 : 0.0;
+  };
+  const double z_f = h.z_perm;
+  const double W = expr->pull_off_work(h.z_max, [&] { return -integral(0.0, z_f); });
+  return -W + (z >= z_f ? integral(z_f, z) : -integral(z, z_f));
+}
+
 std::function<double(double)> compile_cor_claim(const std::string& text,
                                                 const LawParameters& parameters, const Scene& scene,
                                                 std::span<const ExpressionFunction> functions) {
@@ -275,15 +341,8 @@ std::function<double(double)> compile_cor_claim(const std::string& text,
   claim->v0 = scene.velocity;
   if (text.find_first_not_of(" \t") == std::string::npos)
     throw InputError("--expect-cor", "the claimed COR is an empty expression; give e.g. '0.8'");
-  std::string known = known_names("v0", constants);
-  if (!functions.empty()) known += "; functions";
-  for (const ExpressionFunction& f : functions) {
-    known +=
-        ' ';  // two appends: `" " + std::string(...)` trips GCC 12's -Wrestrict (a false alarm)
-    known += f.signature;
-    if (f.one) claim->parser.DefineFun(std::string(f.name), f.one);
-    if (f.two) claim->parser.DefineFun(std::string(f.name), f.two);
-  }
+  const std::string known = known_names("v0", constants) + function_names(functions);
+  define_functions(claim->parser, functions);
   setup_parser(claim->parser, text, "--expect-cor", {{"v0", &claim->v0}}, constants, known, "v0");
   return [claim](double v0) {
     claim->v0 = v0;

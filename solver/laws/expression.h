@@ -47,10 +47,29 @@
 
 namespace ivv {
 
+// A function an expression may call, e.g. a published COR formula (oracles/expression_functions.h
+// lists them; the solver defines none itself). One or two arguments; a value outside the
+// function's domain evaluates to NaN.
+struct ExpressionFunction {
+  std::string_view name;                    // e.g. "hc_cor"
+  std::string_view signature;               // e.g. "hc_cor(u0)"
+  std::string_view meaning;                 // one line: what it computes, its source
+  double (*one)(double) = nullptr;          // arity 1, or
+  double (*two)(double, double) = nullptr;  // arity 2
+};
+
 struct ExpressionLawSpec {
   std::string force;   // loading force [N]; required for LawKind::expression
   std::string unload;  // unloading force [N]; empty: the loading expression, zmax fixed
   bool allow_tension = false;
+  // The force the law intends at z = 0 on first loading [N] (an adhesive law's jump-in, e.g.
+  // "-Fad"), an expression like --force evaluated at z = 0, zdot = v0, zmax = 0; empty: none
+  // declared (the law's F(0) should then be 0). Read by the conformance check static.onset.
+  std::string onset_force = {};
+  // Functions the expressions may call besides muParser's own (the published COR formulas of
+  // oracles/expression_functions.h, which a front end passes; the solver defines none). The
+  // span must outlive the compiled law (the front ends pass a static table).
+  std::span<const ExpressionFunction> functions = {};
 };
 
 // A malformed expression: the message shows the expression with a caret under the column
@@ -78,6 +97,12 @@ class CompiledExpressions {
 
   double loading(double z, double zdot) const;
   double unloading(double z, double zdot, double zmax) const;
+  // The declared onset force (ExpressionLawSpec::onset_force) at z = 0, zdot = v0; nullopt when
+  // none was declared.
+  std::optional<double> onset_force() const;
+  // The pull-off work of the unloading branch from z_max [J], computed by `compute` once per
+  // z_max (the last one is kept: one compiled law per impact).
+  double pull_off_work(double z_max, const std::function<double()>& compute) const;
   bool uses_rate() const { return uses_rate_; }
   bool has_unloading_expression() const { return has_unload_; }
   double length_scale() const { return z_ref_; }     // z_ref [m]
@@ -95,8 +120,10 @@ class CompiledExpressions {
   std::unique_ptr<Parsers> parsers_;
   bool uses_rate_ = false;
   bool has_unload_ = false;
+  bool has_onset_ = false;
   double z_ref_ = 1.0, k_ref_ = 1.0, v_ref_ = 1.0;
   mutable std::optional<std::string> non_finite_;
+  mutable std::optional<std::pair<double, double>> pull_off_;  // (z_max, W) last computed
   mutable bool non_finite_at_onset_ = false;
 };
 
@@ -129,20 +156,15 @@ struct ExpressionLaw {
   // int_{z_f}^{z} max(F_unload(s, 0), 0) ds (20-point Gauss-Legendre; loading: from 0).
   double stored_energy(const Branch<double>& h, double z) const;
   std::optional<double> hysteresis_work(const Branch<double>&) const { return std::nullopt; }
+  // int_0^z F_unload(s, 0) ds [J] on the unloading branch (law.h: separation_work; read only
+  // for a law that allows tension), by adaptive Gauss-Kronrod to 1e-12 relative; nullopt on
+  // first loading.
+  std::optional<double> separation_work(const Branch<double>& h, double z) const;
+  // The declared force at z = 0 on first loading (law.h: onset_force), or nullopt.
+  std::optional<double> onset_force() const { return expr->onset_force(); }
 
  private:
   static double step(double scale, double at);
-};
-
-// A function an expression may call, e.g. a published COR formula (oracles/expression_functions.h
-// lists them; the solver defines none itself). One or two arguments; a value outside the
-// function's domain evaluates to NaN.
-struct ExpressionFunction {
-  std::string_view name;                    // e.g. "hc_cor"
-  std::string_view signature;               // e.g. "hc_cor(u0)"
-  std::string_view meaning;                 // one line: what it computes, its source
-  double (*one)(double) = nullptr;          // arity 1, or
-  double (*two)(double, double) = nullptr;  // arity 2
 };
 
 // The COR a law claims, as an expression in v0 [m/s], the scene's constants, the law's
