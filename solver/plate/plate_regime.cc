@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "scene/input_error.h"
+#include "solver/format.h"
 #include "solver/plate/plate_modes.h"
 #include "solver/request_options.h"
 #include "solver/simulate.h"
@@ -41,12 +42,10 @@ PlateModelOutcome run_ode_model(PlateModel model, Scene scene, const PlateImpact
   return out;
 }
 
-PlateModelOutcome run_quasi_static(const PlateImpactSpec& run) {
-  PlateImpactOptions opt = run.options;
-  opt.cutoff = 0.0;
-  const PlateImpactResult r = simulate_plate_impact(run.scene, run.law, run.parameters, opt);
+// A run of the plate driver (the quasi-static model, or the full plate) as a model's outcome.
+PlateModelOutcome outcome_of(PlateModel model, const PlateImpactResult& r) {
   PlateModelOutcome out;
-  out.model = PlateModel::quasi_static;
+  out.model = model;
   out.ok = r.ok;
   out.reason = r.reason;
   out.e = r.e;
@@ -57,17 +56,12 @@ PlateModelOutcome run_quasi_static(const PlateImpactSpec& run) {
   return out;
 }
 
-PlateModelOutcome full_outcome(const PlateImpactResult& r) {
-  PlateModelOutcome out;
-  out.model = PlateModel::full;
-  out.ok = r.ok;
-  out.reason = r.reason;
-  out.e = r.e;
-  out.F_max = r.F_max;
-  out.t_contact = r.t_contact;
-  out.z_max = r.z_max;
-  out.rhs_evaluations = r.rhs_evaluations;
-  return out;
+// No mode kept: the plate static, C_res = C_static.
+PlateModelOutcome run_quasi_static(const PlateImpactSpec& run) {
+  PlateImpactOptions opt = run.options;
+  opt.cutoff = 0.0;
+  return outcome_of(PlateModel::quasi_static,
+                    simulate_plate_impact(run.scene, run.law, run.parameters, opt));
 }
 
 void measure_against(PlateModelOutcome& m, const PlateImpactResult& full) {
@@ -77,12 +71,6 @@ void measure_against(PlateModelOutcome& m, const PlateImpactResult& full) {
   m.error = std::max(m.error_e, m.error_F);
 }
 
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g", v);
-  return buf;
-}
-
 void explain(PlateRegime& g) {
   for (const PlateModelOutcome& m : g.models) {
     if (m.model == PlateModel::full) continue;
@@ -90,15 +78,15 @@ void explain(PlateRegime& g) {
     if (!m.ok)
       line += "failed (" + m.reason + ")";
     else
-      line += "e " + sci(m.e) + ", F_max " + sci(m.F_max) + " N; error against the full plate " +
-              sci(m.error) + (m.error <= g.tolerance ? " <= " : " > ") + "tolerance " +
-              sci(g.tolerance);
+      line += "e " + fmt(m.e, 2) + ", F_max " + fmt(m.F_max, 2) +
+              " N; error against the full plate " + fmt(m.error, 2) +
+              (m.error <= g.tolerance ? " <= " : " > ") + "tolerance " + fmt(g.tolerance, 2);
     g.reasons.push_back(line);
   }
   g.reasons.push_back("regime " + g.regime + ": the cheapest model within tolerance" +
                       (g.regime == "plate-dynamics" ? " is the full plate" : ""));
-  g.reasons.push_back("for comparison, Olsson's mass criterion (mass ratio " + sci(g.mass_ratio) +
-                      "): " + g.olsson);
+  g.reasons.push_back("for comparison, Olsson's mass criterion (mass ratio " +
+                      fmt(g.mass_ratio, 2) + "): " + g.olsson);
 }
 
 }  // namespace
@@ -151,17 +139,19 @@ const PlateModelOutcome& PlateRegime::outcome(PlateModel m) const {
   throw std::logic_error("PlateRegime::outcome: model not run");
 }
 
-PlateModel PlateRegime::chosen() const {
+PlateModel PlateRegime::cheapest_within(double t) const {
   for (const PlateModelOutcome& o : models)
-    if (o.model != PlateModel::full && o.ok && o.error <= tolerance) return o.model;
+    if (o.model != PlateModel::full && o.ok && o.error <= t) return o.model;
   return PlateModel::full;
 }
 
+PlateModel PlateRegime::chosen() const {
+  return cheapest_within(tolerance);
+}
+
 std::string PlateRegime::regime_at(double other_tolerance) const {
-  for (const PlateModelOutcome& o : models)
-    if (o.model != PlateModel::full && o.ok && o.error <= other_tolerance)
-      return std::string(to_string(o.model));
-  return "plate-dynamics";
+  const PlateModel m = cheapest_within(other_tolerance);
+  return m == PlateModel::full ? "plate-dynamics" : std::string(to_string(m));
 }
 
 std::string olsson_mass_class(double mass_ratio) {
@@ -190,7 +180,7 @@ PlateRegime plate_regime(const PlateImpactSpec& run, const PlateImpactResult& fu
   g.models.push_back(
       run_ode_model(PlateModel::infinite_plate, infinite_plate_scene(run.scene), run));
   g.models.push_back(run_quasi_static(run));
-  g.models.push_back(full_outcome(full));
+  g.models.push_back(outcome_of(PlateModel::full, full));
   for (PlateModelOutcome& m : g.models)
     if (m.model != PlateModel::full) measure_against(m, full);
 

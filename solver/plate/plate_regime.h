@@ -102,6 +102,8 @@ struct PlateRegime {
   PlateModel chosen() const;
   // The regime's name at another tolerance, from the measured errors (no new run).
   std::string regime_at(double other_tolerance) const;
+  // The first cheaper model (in the header's order) within `t` of the full plate, else full.
+  PlateModel cheapest_within(double t) const;
 };
 
 // The default tolerance of the choice: 1e-3 in e (units of v0) and relative in F_max. Tighter
