@@ -8,7 +8,7 @@
 
 #include "scene/input_error.h"
 #include "scene/scene_values.h"
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 
 namespace ivv {
 

@@ -21,7 +21,7 @@ long parse_count(const std::string& text, const std::string& field, long lo, lon
 std::vector<double> parse_grid(const std::string& text, const std::string& field, bool log);
 
 // One `--set KEY=RANGE` of `ivv sweep`: a scene value (scene/scene_values.h) varied over RANGE,
-// "LO:HI:N" (linear, decimal: solver/sweep_grid.h), "log:LO:HI:N" (logarithmic) or "a,b,c".
+// "LO:HI:N" (linear, decimal: solver/sweep/sweep_grid.h), "log:LO:HI:N" (logarithmic) or "a,b,c".
 struct SetAxisSpec {
   std::string key;    // e.g. "structure.thickness"
   std::string range;  // as typed, without "log:"

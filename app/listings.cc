@@ -2,9 +2,9 @@
 #include <iostream>
 
 #include "app/command.h"
-#include "solver/integrator_accuracy.h"
-#include "solver/integrators.h"
-#include "solver/law_registry.h"
+#include "solver/choice/integrator_accuracy.h"
+#include "solver/laws/law_registry.h"
+#include "solver/steppers/integrators.h"
 
 namespace ivv::app {
 namespace {

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 
 namespace ivv::mpi {
 

@@ -20,7 +20,7 @@
 #include "scene/input_error.h"
 #include "scene/scene_values.h"
 #include "solver/atomic_file.h"
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 
 namespace ivv::app {
 namespace {

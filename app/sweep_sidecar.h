@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 
 namespace ivv {
 

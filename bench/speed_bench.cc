@@ -19,7 +19,7 @@
 #include "closed_forms/linear_model.h"
 #include "solver/format.h"
 #include "solver/plate/plate_impact.h"
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 
 namespace ivv::bench {
 using verification::describe_machine;

@@ -1,5 +1,5 @@
 // The undamped impact in closed form (docs/design.md §2), fast enough to be a model route of
-// `--model auto` (solver/model_choice.h, routes 1 and 2), SI units throughout.
+// `--model auto` (solver/choice/model_choice.h, routes 1 and 2), SI units throughout.
 //
 //   Hertz:          z_m = (5 m v0^2/(4 K_h))^{2/5}, F_max = K_h z_m^{3/2},
 //                   t_f = (4/5) B(2/5, 1/2) z_m/v0, e = 1.

@@ -1,7 +1,7 @@
 # cmake --install: the libraries ivv::scene, ivv::closed_forms, ivv::solver, ivv::oracles,
 # ivv::conformance, the headers they
 # need, the find_package(ivv) files, and the shipped data. Installed layout under <prefix>:
-#   include/ivv/{scene,closed_forms,solver,oracles,verification}/...   (#include "solver/law.h", as in the tree)
+#   include/ivv/{scene,closed_forms,solver,oracles,verification}/...   (#include "solver/laws/law.h", as in the tree)
 #   lib/libivv_*.a, lib/cmake/ivv/ivvConfig.cmake, ivvConfigVersion.cmake, ivvTargets.cmake
 #   share/ivv/*.csv, *.md, generate_*.py, scenes/*.toml   (scene/data_dir.h finds them)
 #   include/ivv/examples/laws/*.h, share/ivv/examples/laws/ (the example laws, and a CMake

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "scene/input_error.h"
-#include "solver/law.h"
+#include "solver/laws/law.h"
 
 namespace ivv {
 namespace {

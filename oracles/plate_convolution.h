@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "solver/law_registry.h"
+#include "solver/laws/law_registry.h"
 #include "solver/plate/plate_modes.h"
 
 namespace ivv {

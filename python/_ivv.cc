@@ -26,7 +26,7 @@
 #include "scene/scene_values.h"
 #include "solver/plate/plate_run.h"
 #include "solver/request_options.h"
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 #include "validation/calibration.h"
 #include "validation/calibration_file.h"
 #include "validation/measured_data.h"
@@ -291,7 +291,7 @@ py::array_t<double> numbers(const std::vector<double>& v) {
   return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 }
 
-// The columns of the sweep CSV (solver/sweep.h, sweep_csv_header()) from the results the CSV
+// The columns of the sweep CSV (solver/sweep/sweep.h, sweep_csv_header()) from the results the CSV
 // is written from: a failed point has NaN where the CSV leaves its result columns empty.
 py::dict sweep_columns(const SweepRequest& req, const std::vector<SweepPoint>& points) {
   static const char* const result_names[] = {

@@ -3,7 +3,7 @@
 #include <map>
 
 #include "reports/html.h"
-#include "solver/integrators.h"
+#include "solver/steppers/integrators.h"
 #include "verification/cases.h"
 
 namespace ivv::reports {

@@ -59,7 +59,7 @@ nlohmann::json result_json(const ImpactResult& r) {
   if (!r.reason.empty()) j["reason"] = r.reason;
   if (r.failure != FailureKind::none) j["failure"] = to_string(r.failure);
   if (r.status == ImpactStatus::captured) {
-    // the end state (solver/capture_end_state.h): the contact never ends, so t_contact (and
+    // the end state (solver/driver/capture_end_state.h): the contact never ends, so t_contact (and
     // t_alpha_max when the impactor never turned back) is infinite, null here; when capture
     // was established is t_capture, an "at capture" time
     j["e_bound"] = r.e_bound;

@@ -7,7 +7,7 @@
 
 #include "scene/scene.h"
 #include "scene/scene_json.h"  // scene_json(), structure_json(): the one scene writer
-#include "solver/model_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/plate/plate_run.h"
 #include "solver/request_options.h"
 #include "solver/result.h"

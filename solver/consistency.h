@@ -26,8 +26,8 @@
 #include <string>
 #include <string_view>
 
-#include "solver/integrator_options.h"
 #include "solver/result.h"
+#include "solver/steppers/integrator_options.h"
 
 namespace ivv {
 

@@ -9,7 +9,7 @@
 
 #include "scene/input_error.h"
 #include "solver/consistency.h"
-#include "solver/impact_driver.h"
+#include "solver/driver/impact_driver.h"
 #include "solver/simulate.h"
 #include "solver/steppers/gsl_odeiv2.h"
 

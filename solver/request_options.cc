@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "scene/input_error.h"
-#include "solver/integrator_choice.h"
+#include "solver/choice/integrator_choice.h"
 #include "solver/plate/plate_run.h"
 
 namespace ivv {

@@ -19,24 +19,24 @@
 #include <string>
 #include <vector>
 
-#include "solver/model_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/simulate.h"
 
 namespace ivv {
 
 struct RequestOptions {
-  std::string scene = "paper";        // a TOML file, 'paper' or a shipped scene's name
-  std::optional<double> v0;           // [m/s] replaces [impact] velocity
-  std::optional<double> zeta;         // [-] replaces [damping] with this damping ratio
-  std::optional<double> c;            // [N s/m] replaces [damping] with this coefficient
-  std::optional<double> lambda;       // [-] replaces [damping] with the c of this Zener lambda
-  bool no_dashpot = false;            // drops the scene's dashpot
-  std::string law = "elastoplastic";  // a registered law's name (ivv laws)
-  ExpressionLawSpec expression;       // a non-empty force: the expression law instead of `law`
-  std::string integrator = "auto";    // a name of integrator_table(), or auto
-  std::string model = "auto";         // auto or full (solver/model_choice.h)
-  std::optional<double> rtol, atol;   // IntegratorOptions
-  std::optional<double> dt;           // [-] rk4's fixed normalised step; > 0 when given
+  std::string scene = "paper";            // a TOML file, 'paper' or a shipped scene's name
+  std::optional<double> v0;               // [m/s] replaces [impact] velocity
+  std::optional<double> zeta;             // [-] replaces [damping] with this damping ratio
+  std::optional<double> c;                // [N s/m] replaces [damping] with this coefficient
+  std::optional<double> lambda;           // [-] replaces [damping] with the c of this Zener lambda
+  bool no_dashpot = false;                // drops the scene's dashpot
+  std::string law = "elastoplastic";      // a registered law's name (ivv laws)
+  ExpressionLawSpec expression;           // a non-empty force: the expression law instead of `law`
+  std::string integrator = "auto";        // a name of integrator_table(), or auto
+  std::string model = "auto";             // auto or full (solver/choice/model_choice.h)
+  std::optional<double> rtol, atol;       // IntegratorOptions
+  std::optional<double> dt;               // [-] rk4's fixed normalised step; > 0 when given
   std::optional<double> model_tolerance;  // a finite plate's model choice (plate_regime.h)
   std::optional<long> max_steps;
   std::optional<double> hc_k;   // [N/m^1.5] Hunt-Crossley K (the law's parameter "K")
@@ -60,7 +60,7 @@ SimulationRequest to_request(Scene scene, const RequestOptions& options);
 // The request every point of a sweep starts from: as to_request(), except that a scene with a
 // finite plate is checked as its plate runs (solver/plate/plate_impact.h: no dashpot flag, no
 // expression law, a rate-independent law) instead of refused, since a sweep runs such points on
-// the plate (solver/sweep.cc).
+// the plate (solver/sweep/sweep.cc).
 SimulationRequest to_sweep_base(const RequestOptions& options);
 // The same for a scene the front end already holds (the Python module): options.scene unread.
 SimulationRequest to_sweep_base(Scene scene, const RequestOptions& options);
@@ -77,7 +77,7 @@ struct SimulationRun {
 };
 
 // Validates `request` (InputError naming the field), chooses the integrator once when asked
-// to, and runs the model the request names (solver/model_choice.h for --model auto).
+// to, and runs the model the request names (solver/choice/model_choice.h for --model auto).
 SimulationRun run_simulation(SimulationRequest request,
                              std::vector<TrajectoryPoint>* trajectory = nullptr);
 

@@ -120,7 +120,7 @@ struct ImpactResult {
   // The pull-off work of the unloading branch, -int_0^{z_f} F ds [J]: the depth of an attractive
   // well below zero force (a law that allows tension and states its separation work, law.h),
   // computed once where unloading begins; 0 without a well. An impactor whose remaining energy
-  // cannot climb out of it is captured (solver/capture.h, criterion 4).
+  // cannot climb out of it is captured (solver/driver/capture.h, criterion 4).
   double pull_off_work = 0.0;
   double impulse = 0.0;              // int F dt [N s]
   double impulse_compression = 0.0;  // int_0^{t_c} F dt [N s]
@@ -128,8 +128,8 @@ struct ImpactResult {
   long steps = 0;
   long rhs_evaluations = 0;
   // What produced the numbers (static strings, no allocation per impact): `route` is
-  // "integrated" or the closed-form route --model auto took (solver/model_choice.h, the names
-  // of model_choice.route), `integrator` the one that ran, "none" for a closed form.
+  // "integrated" or the closed-form route --model auto took (solver/choice/model_choice.h, the
+  // names of model_choice.route), `integrator` the one that ran, "none" for a closed form.
   std::string_view route = "integrated";
   std::string_view integrator = "none";
   std::vector<ImpactEvent> events;

@@ -5,11 +5,11 @@
 #include <sstream>
 
 #include "scene/input_error.h"
+#include "solver/choice/integrator_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/consistency.h"
-#include "solver/integrator_choice.h"
-#include "solver/integrator_instance.h"
-#include "solver/model_choice.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/integrator_instance.h"
 
 namespace ivv {
 namespace {

@@ -13,24 +13,26 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "solver/integrator_options.h"
-#include "solver/integrators.h"
-#include "solver/law_registry.h"
 #include "solver/laws/expression.h"
+#include "solver/laws/law_registry.h"
 #include "solver/result.h"
+#include "solver/steppers/integrator_options.h"
+#include "solver/steppers/integrators.h"
 
 namespace ivv {
 
-// IntegratorKind, the table of integrator traits and parse_integrator: solver/integrators.h.
+// IntegratorKind, the table of integrator traits and parse_integrator:
+// solver/steppers/integrators.h.
 
 // The built-in laws (not `expression`), in registry order.
 std::span<const LawKind> all_laws();
 // Parse a name; throws InputError(field, "unknown ...; valid names: ...") otherwise.
 
-// What runs for a request (solver/model_choice.h). `full`: the ODE model of the law, integrated
-// by `integrator` (the library's default). `automatic` (`--model auto`, the CLI's default): what
-// the scene needs within the requested tolerance - an exact closed form where one exists, the
-// linearized closed form where its estimated error is within rtol, otherwise the full model.
+// What runs for a request (solver/choice/model_choice.h). `full`: the ODE model of the law,
+// integrated by `integrator` (the library's default). `automatic` (`--model auto`, the CLI's
+// default): what the scene needs within the requested tolerance - an exact closed form where one
+// exists, the linearized closed form where its estimated error is within rtol, otherwise the full
+// model.
 enum class ModelKind { automatic, full };
 std::string_view to_string(ModelKind kind);      // "auto", "full"
 ModelKind parse_model(const std::string& name);  // throws InputError("--model", ...)
@@ -40,7 +42,7 @@ struct SimulationRequest {
   LawKind law = LawKind::elastoplastic;
   IntegratorKind integrator = IntegratorKind::odeint_dopri5;
   // --integrator auto: `integrator` is replaced per run by choose_integrator()'s choice
-  // (solver/integrator_choice.h), so each point of a sweep gets its own.
+  // (solver/choice/integrator_choice.h), so each point of a sweep gets its own.
   bool auto_integrator = false;
   ModelKind model = ModelKind::full;
   IntegratorOptions options;
@@ -93,7 +95,7 @@ ImpactResult simulate(const SimulationRequest& request,
 ImpactResult simulate(const ValidatedRequest& request,
                       std::vector<TrajectoryPoint>* trajectory = nullptr);
 
-// The integrator a run uses: auto_integrator()'s choice (solver/integrator_choice.h) when
+// The integrator a run uses: auto_integrator()'s choice (solver/choice/integrator_choice.h) when
 // request.auto_integrator, request.integrator otherwise.
 IntegratorKind effective_integrator(const ValidatedRequest& request);
 

@@ -1,6 +1,7 @@
 // Internals of simulate(): the typed run for one stepper and its conversion to SI units.
-// Included by one translation unit per integrator (generated from solver/integrator_list.h,
-// see solver/integrator_instance_impl.h) to spread compile time.
+// Included by one translation unit per integrator (generated from
+// solver/steppers/integrator_list.h, see solver/steppers/integrator_instance_impl.h) to spread
+// compile time.
 #pragma once
 
 #include <cmath>
@@ -8,11 +9,11 @@
 #include <memory>
 #include <string>
 
-#include "solver/capture_end_state.h"
-#include "solver/impact_driver.h"
-#include "solver/impact_system.h"
-#include "solver/law_registry.h"
+#include "solver/driver/capture_end_state.h"
+#include "solver/driver/impact_driver.h"
+#include "solver/driver/impact_system.h"
 #include "solver/laws/expression.h"
+#include "solver/laws/law_registry.h"
 #include "solver/simulate.h"
 
 namespace ivv::detail {

@@ -1,6 +1,6 @@
 // simulate() for any contact law: the public entry point of a law author's C++ code.
 //
-//   struct MyLaw { ... };                        // models ivv::ContactLaw (solver/law.h)
+//   struct MyLaw { ... };                        // models ivv::ContactLaw (solver/laws/law.h)
 //   ivv::ImpactResult r = ivv::simulate(MyLaw{...}, ivv::paper_scene());
 //
 // The law is a template parameter all the way into the right-hand side (no virtual call per
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "scene/input_error.h"
-#include "solver/integrator_list.h"
 #include "solver/simulate_impl.h"
+#include "solver/steppers/integrator_list.h"
 
 namespace ivv {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "solver/model_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/parallel.h"
 #include "validation/parameters.h"
 

@@ -1,13 +1,13 @@
 // The model evaluations of a calibration or a prediction: one request, a set of parameter
 // values, a list of impact velocities; each impact runs with --model auto
-// (solver/model_choice.h: a closed form where one exists, the integrator otherwise) on the
+// (solver/choice/model_choice.h: a closed form where one exists, the integrator otherwise) on the
 // project's one parallel loop (solver/parallel.h), results in velocity order whatever the
 // thread count.
 //
 // The tolerance rule (runs tight enough that the integration error is far below
 // the data's noise). --model auto states the error it commits in e (in units of v0, as a
-// stated bound: closed forms 1e-14, integrated routes 200-300 rtol, solver/integrator_choice.h).
-// A calibration asks for
+// stated bound: closed forms 1e-14, integrated routes 200-300 rtol,
+// solver/choice/integrator_choice.h). A calibration asks for
 //     stated error <= kIntegrationShare * u_min,   kIntegrationShare = 1e-5,
 // u_min the smallest standard uncertainty of the data (relative for F_max and t_contact), i.e.
 // rtol = 1e-5 u_min / 300, clamped to [1e-13, 1e-8]. Central differences of step h (relative,

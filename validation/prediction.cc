@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "scene/input_error.h"
-#include "solver/model_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/parallel.h"
 #include "validation/model_runs.h"
 #include "validation/normal.h"

@@ -11,7 +11,7 @@
 #include <map>
 #include <mutex>
 
-#include "solver/law_registry.h"
+#include "solver/laws/law_registry.h"
 #include "verification/cases.h"
 #include "verification/conformance.h"
 #include "verification/support.h"

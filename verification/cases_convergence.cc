@@ -1,5 +1,5 @@
 // Convergence tier: the observed order of every integrator of the table against the order it
-// declares (solver/integrators.h), and what event location does to it.
+// declares (solver/steppers/integrators.h), and what event location does to it.
 //
 // Generic case (convergence.order.<integrator>): every integrator with a fixed-step mode
 // (IntegratorTraits::fixed_step_mode: rk4, dp45, dop853, odeint-dopri5, gsl-rk8pd) runs at a
@@ -24,10 +24,10 @@
 #include <tuple>
 #include <utility>
 
+#include "solver/choice/integrator_choice.h"
+#include "solver/choice/model_choice.h"
 #include "solver/consistency.h"
-#include "solver/integrator_choice.h"
-#include "solver/model_choice.h"
-#include "solver/onset_series.h"
+#include "solver/driver/onset_series.h"
 #include "verification/cases.h"
 #include "verification/onset_reference.h"
 #include "verification/study_speed.h"
@@ -117,8 +117,8 @@ Outcome step_ends_case(IntegratorKind k) {
   return o;
 }
 
-// --integrator auto (solver/integrator_choice.h) on a grid: the chosen integrator's errors in
-// e, F_max, z_max and t_f must stay within the estimated error it states; the choice must be
+// --integrator auto (solver/choice/integrator_choice.h) on a grid: the chosen integrator's errors
+// in e, F_max, z_max and t_f must stay within the estimated error it states; the choice must be
 // explicit on the lightly damped scenes (accuracy sets the steps there) and implicit at
 // zeta = 100 (stability would hold dop853 to thousands of steps). The heavily damped scenes
 // (v0 = 1 and 5 m/s, zeta = 8 and 16, where a stiffness ratio once chose the slower rodas4) take
@@ -201,7 +201,7 @@ Outcome auto_choice_case(double rtol) {
                     "on v0 0.3-5 m/s x zeta 0-0.3, those four and zeta = 100");
 }
 
-// --model auto (solver/model_choice.h) against the 50-digit reference of the full model: at
+// --model auto (solver/choice/model_choice.h) against the 50-digit reference of the full model: at
 // every point of the grid, each of e (in units of v0), F_max, z_max and t_f (relative, over e:
 // see below) is within the estimated error the choice states, and that estimate never exceeds what
 // the full model with
@@ -318,7 +318,7 @@ Outcome work_precision_case() {
   return o;
 }
 
-// The onset series (solver/onset_series.h) against the 50-digit integration from tau = 0
+// The onset series (solver/driver/onset_series.h) against the 50-digit integration from tau = 0
 // (verification/onset_reference.h) at the tau where the integrators start from it, for each
 // tolerance: each quantity's error in units of what the series' truncation bound allows for
 // it (bound x the part of the quantity the series computes, J for w, tau - a for a, tau - z
@@ -371,7 +371,7 @@ void register_convergence_cases(Registry& reg) {
                  ": the chosen integrator stays within its estimated error",
              Tier::cross_implementation,
              "the choice states estimated_error = 200 rtol for dop853, 300 rtol for "
-             "rodas4 (solver/integrator_choice.h); it must hold",
+             "rodas4 (solver/choice/integrator_choice.h); it must hold",
              Cost::quick, [rtol] { return auto_choice_case(rtol); }});
   }
   for (IntegratorKind k : production_integrators()) {
@@ -394,7 +394,7 @@ void register_convergence_cases(Registry& reg) {
            "the bound is the first omitted degree of the series (sum of |c_ab| max(p, r)^6; of "
            "B^2 for Wv); "
            "later degrees add at most a fraction max(p, r)/2.6 < 1 of it, hence 2 bounds "
-           "(solver/onset_series.h); the reference is Richardson-extrapolated RK4 in q = "
+           "(solver/driver/onset_series.h); the reference is Richardson-extrapolated RK4 in q = "
            "tau^{1/2} in 50 digits",
            Cost::quick, onset_series_case});
   reg.add({"autochoice.model",
@@ -403,7 +403,7 @@ void register_convergence_cases(Registry& reg) {
            Tier::cross_implementation,
            "each route states its error (closed forms 1e-14 or the quadrature's estimate, the "
            "linearized route 2 (1 + 10 zeta) D0, integrated routes 200 or 300 rtol: "
-           "solver/model_choice.h); the case holds it to that statement against mp50",
+           "solver/choice/model_choice.h); the case holds it to that statement against mp50",
            Cost::quick, model_auto_case});
   reg.add({"convergence.work-precision",
            "Every adaptive integrator meets its accumulated tolerance bound at every rtol of the "

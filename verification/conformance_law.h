@@ -72,7 +72,7 @@ class TypedProbe final : public LawProbe {
 };
 
 // Wraps a C++ law: `make_law(const Scene&) -> Law`. A Law that does not model ContactLaw is a
-// compile error naming the member at fault (solver/law.h).
+// compile error naming the member at fault (solver/laws/law.h).
 template <class Law, class MakeLaw>
 LawUnderTest law_under_test(std::string name, std::string description, MakeLaw make_law) {
   static_assert(assert_contact_law_everywhere<Law>());

@@ -2,7 +2,7 @@
 // law of a request.
 #include <memory>
 
-#include "solver/law_registry.h"
+#include "solver/laws/law_registry.h"
 #include "solver/simulate_law.h"
 #include "verification/conformance.h"
 #include "verification/conformance_law.h"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <optional>
 
-#include "solver/law.h"
+#include "solver/laws/law.h"
 #include "verification/conformance_internal.h"
 #include "verification/continuity_scan.h"
 

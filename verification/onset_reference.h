@@ -1,4 +1,4 @@
-// The 50-digit reference for the onset series (solver/onset_series.h): the same equations
+// The 50-digit reference for the onset series (solver/driver/onset_series.h): the same equations
 // integrated from tau = 0, independently of the series and of every double-precision stepper.
 //
 // In tau the solution is not smooth at onset (F ~ tau^{3/2}); in q = tau^{1/2}, with
@@ -11,7 +11,7 @@
 // O((q/n)^5) or better), far below the 1e-13 the comparisons need at n = 400.
 #pragma once
 
-#include "solver/onset_series.h"
+#include "solver/driver/onset_series.h"
 
 namespace ivv::verification {
 

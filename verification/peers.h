@@ -2,8 +2,8 @@
 // measured in the same run as ivv (`ivv bench`, the report's speed section).
 //
 // The problem (every peer; verification/peer_problem.h): the elastoplastic law of paper eqs
-// 8-10 with a dashpot, in the normalised variables of solver/impact_system.h (a' = w, w' = -F,
-// z' = w - 2 zeta F, state (a, w, z), no quadratures), the kink at z = z_y left to the
+// 8-10 with a dashpot, in the normalised variables of solver/driver/impact_system.h (a' = w, w' =
+// -F, z' = w - 2 zeta F, state (a, w, z), no quadratures), the kink at z = z_y left to the
 // integrator's error control. Two events, as a user would code them: maximum compression
 // z' = 0 (switch to the unloading curve, record z_m and F_max = F(z_m)) and separation F = 0
 // (e = -w, t_f). Every peer runs at rtol = atol = tol (the state is O(1)).

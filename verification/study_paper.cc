@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 #include "verification/study.h"
 #include "verification/study_restitution.h"
 #include "verification/support.h"

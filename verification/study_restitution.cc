@@ -10,7 +10,7 @@
 #include "oracles/published.h"
 #include "oracles/reference_tables.h"
 #include "oracles/undamped_elastoplastic.h"
-#include "solver/sweep.h"
+#include "solver/sweep/sweep.h"
 #include "verification/study.h"
 #include "verification/support.h"
 

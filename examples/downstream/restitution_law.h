@@ -1,5 +1,5 @@
 // A Hertz law that restitutes a fixed fraction of the impact velocity: a law author's own law,
-// written against the installed ivv (solver/law.h) and kept outside the ivv tree.
+// written against the installed ivv (solver/laws/law.h) and kept outside the ivv tree.
 //
 //   loading     F = K z^{3/2}
 //   unloading   F = K_u (z - z_p)^{3/2},   K_u = K / e^3,   z_p = (1 - e^2) z_m
@@ -13,7 +13,7 @@
 #include <optional>
 #include <string_view>
 
-#include "solver/law.h"
+#include "solver/laws/law.h"
 
 namespace downstream {
 

@@ -17,7 +17,7 @@
 #include <optional>
 #include <string_view>
 
-#include "solver/law.h"
+#include "solver/laws/law.h"
 
 namespace ivv::examples {
 

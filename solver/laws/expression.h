@@ -42,8 +42,8 @@
 
 #include "scene/input_error.h"
 #include "scene/scene.h"
-#include "solver/law.h"
-#include "solver/law_parameters.h"
+#include "solver/laws/law.h"
+#include "solver/laws/law_parameters.h"
 
 namespace ivv {
 

@@ -14,9 +14,9 @@
 #include <optional>
 
 #include "scene/scene.h"
-#include "solver/law.h"
-#include "solver/law_kind.h"
-#include "solver/law_parameters.h"
+#include "solver/laws/law.h"
+#include "solver/laws/law_kind.h"
+#include "solver/laws/law_parameters.h"
 
 namespace ivv {
 

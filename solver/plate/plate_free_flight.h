@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/event_locator.h"
+#include "solver/driver/event_locator.h"
 #include "solver/plate/plate_impact_driver.h"
 
 namespace ivv {

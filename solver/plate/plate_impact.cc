@@ -5,7 +5,7 @@
 #include <string>
 
 #include "scene/input_error.h"
-#include "solver/event_locator.h"
+#include "solver/driver/event_locator.h"
 #include "solver/plate/odeint_dense_stepper.h"
 #include "solver/plate/plate_impact_driver.h"
 #include "solver/plate/plate_modes.h"

@@ -50,8 +50,8 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "solver/law_parameters.h"
-#include "solver/law_registry.h"
+#include "solver/laws/law_parameters.h"
+#include "solver/laws/law_registry.h"
 #include "solver/result.h"
 
 namespace ivv {
@@ -142,7 +142,7 @@ bool has_finite_plate(const Scene& scene);
 // parameters.
 void validate_plate_impact(const Scene& scene, LawKind law, const LawParameters& parameters);
 
-// A plate impact as one row of a sweep (solver/sweep_csv.h): e, F_max, t_contact (the first
+// A plate impact as one row of a sweep (solver/sweep/sweep_csv.h): e, F_max, t_contact (the first
 // contact), z_max, the steps (integration + free flight) and energy.residual = the ledger's
 // largest error [J]; route "finite-plate", integrator "dop853"; the columns a plate run does not
 // define (e_poisson, e_energetic, t_F_max, alpha_max, z_perm) are NaN. Status separated, or

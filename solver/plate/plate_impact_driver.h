@@ -13,11 +13,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "solver/event_locator.h"
-#include "solver/integrator_options.h"
-#include "solver/law.h"
+#include "solver/driver/event_locator.h"
+#include "solver/laws/law.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/plate/plate_system.h"
+#include "solver/steppers/integrator_options.h"
 
 namespace ivv {
 

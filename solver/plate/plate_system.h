@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "solver/law.h"
+#include "solver/laws/law.h"
 #include "solver/plate/plate_modes.h"
 
 namespace ivv {

@@ -32,7 +32,7 @@
 #include <cstddef>
 #include <string_view>
 
-#include "solver/integrator_options.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/step_result.h"
 #include "solver/steppers/step_state.h"
 

@@ -10,8 +10,8 @@
 #include <boost/numeric/odeint.hpp>
 #include <sstream>
 
-#include "solver/hermite.h"
-#include "solver/integrator_options.h"
+#include "solver/driver/hermite.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {

@@ -12,7 +12,7 @@
 #include <exception>
 #include <string>
 
-#include "solver/integrator_options.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {

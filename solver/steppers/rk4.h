@@ -16,8 +16,8 @@
 #include <sstream>
 #include <string>
 
-#include "solver/hermite.h"
-#include "solver/integrator_options.h"
+#include "solver/driver/hermite.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {

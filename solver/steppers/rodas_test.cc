@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include "solver/choice/integrator_choice.h"
 #include "solver/consistency.h"
-#include "solver/integrator_choice.h"
 #include "solver/simulate.h"
 
 namespace ivv {

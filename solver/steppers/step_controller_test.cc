@@ -11,9 +11,9 @@
 #include <limits>
 #include <vector>
 
-#include "solver/integrator_options.h"
 #include "solver/steppers/dop853.h"
 #include "solver/steppers/dp45.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/rodas.h"
 
 namespace ivv {

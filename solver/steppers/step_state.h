@@ -18,7 +18,7 @@
 #include <optional>
 #include <string_view>
 
-#include "solver/integrator_options.h"
+#include "solver/steppers/integrator_options.h"
 #include "solver/steppers/step_controller.h"
 #include "solver/steppers/step_result.h"
 

@@ -1,0 +1,624 @@
+// The phase loop shared by every integrator: integrate one smooth branch at a time, locate the
+// events on each step's interpolant, restart at each event that changes the law's branch.
+//
+//   advance one step -> the active events (impact_events.h) -> locate_earliest on the step
+//   (event_locator.h) -> none: the capture criteria (capture.h) after an unloading step
+//                     -> some: the event state, then act on what each event that happened means
+//                        (record, next segment, begin unloading, end of contact) and restart
+//
+// The events, their root functions, directions and meanings are the table of impact_events.h;
+// the capture criteria (exact, by energy, grazing) are the units of capture.h. Onset is the
+// initial state (alpha = 0, alpha_dot = v0); the error-controlled steppers written here start
+// past it, from the onset series, where the law declares a Hertzian onset (onset_series.h).
+//
+// Steppers with dense output are located on it directly, and a step goes on past an event
+// that changes no branch (max_displacement, peak_force: they only record the state): the rest
+// of the same step is scanned from the event on, rather than thrown away by a restart there.
+// Steppers with a Hermite interpolant (dense_output == false) have the estimate refined by
+// re-stepping to it and re-interpolating on the shrinking bracket until the time is converged
+// to ~1e-14 relative; a refinement that does not converge, a root finder out of iterations or
+// a failed re-step ends the run as a failure naming it.
+//
+// Every run that ends separated or captured passes the consistency check of consistency.h
+// (three CORs, energy ledger) unless options.check_consistency is false.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "solver/consistency.h"
+#include "solver/driver/capture.h"
+#include "solver/driver/event_locator.h"
+#include "solver/driver/hermite.h"
+#include "solver/driver/impact_events.h"
+#include "solver/driver/onset_series.h"
+#include "solver/laws/law.h"
+#include "solver/result.h"
+#include "solver/steppers/integrator_options.h"
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+// A trajectory sample in normalised variables (tau, state); observers get these.
+template <class System>
+using SampleObserver =
+    std::function<void(double tau, const typename System::state_type& x, const System& sys)>;
+
+template <class System>
+struct NormalisedRun {
+  using T = typename System::value_type;
+  using state_type = typename System::state_type;
+  ImpactStatus status = ImpactStatus::failed;
+  FailureKind failure = FailureKind::none;
+  std::string reason;
+  T tau_end = 0;
+  state_type x_end{};
+  typename System::history_type branch;  // final history (z_max, z_perm, ...)
+  T tau_z_max = 0, F_max = 0, tau_F_max = 0;
+  bool has_max_displacement = false;
+  T tau_alpha_max = 0;
+  state_type x_alpha_max{};  // state at alpha_dot = 0 (compression/restitution split)
+  long steps_alpha_max = 0;  // accepted steps when alpha_dot = 0 was reached
+  double e_bound = 0;        // captured: the Newton COR is at most this (units of v0)
+  struct Event {
+    EventKind kind;
+    T tau;
+    state_type x;
+    T force;  // normalised force on the branch in force when the event happened
+  };
+  std::vector<Event> events;
+  long steps = 0;
+};
+
+// Re-steps of the Hermite event refinement before it is declared unconverged. Each re-step
+// shrinks the bracket to a sub-bracket of the cubic interpolant's root, whose error falls as
+// the fourth power of the bracket: from a step-sized bracket a few re-steps reach the ulp level.
+inline constexpr int kMaxRefinements = 12;
+
+template <class T>
+struct Refinement {
+  T tau{};              // refined event time
+  std::string failure;  // empty when converged
+};
+
+// Refines an event time found on a Hermite interpolant: re-step exactly to the estimate,
+// keep the sub-bracket that still contains the crossing, re-interpolate on it, repeat until
+// the estimate moves by no more than a few ulps (1e-14 in double, 1e-48 in the 50-digit
+// reference), or the bracket is that narrow, or the move changes the event state by less
+// than one step's error tolerance (|dtau| max|x'| <= atol + rtol max|x|; the reference's
+// tolerance for the 50-digit type): a grazing event, whose function barely changes sign, is
+// ill-conditioned in time but not in state, and its time cannot be pinned to ulps. Not
+// converged after kMaxRefinements re-steps, or a re-step that fails: `failure` says so.
+template <class Stepper, class System, class EventValue>
+Refinement<typename System::value_type> refine_on_restep(Stepper& stepper, const System& sys,
+                                                         EventKind kind, Direction dir,
+                                                         typename System::value_type te,
+                                                         typename System::state_type& xe,
+                                                         const EventValue& event_value,
+                                                         const IntegratorOptions& opt) {
+  using T = typename System::value_type;
+  using state_type = typename System::state_type;
+  const LocatorOptions& locator = opt.locator;
+  auto abs_of = [](const T& v) { return v < 0 ? T(-v) : v; };
+  const bool reference = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+  const T atol = reference ? T(opt.reference_tolerance) : T(opt.atol);
+  const T rtol = reference ? T(opt.reference_tolerance) : T(opt.rtol);
+  // the state moves by |dtau| max|x'| when the time moves by dtau
+  auto state_resolved = [&](const T& dtau, const state_type& x) {
+    state_type f;
+    sys(x, f, te);
+    T f_max = 0, x_max = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      f_max = std::max(f_max, abs_of(f[i]));
+      x_max = std::max(x_max, abs_of(x[i]));
+    }
+    return abs_of(dtau) * f_max <= atol + rtol * x_max;
+  };
+  T lo = stepper.t0(), hi = stepper.t1();
+  state_type x_lo = stepper.x0(), f_lo = stepper.f0(), x_hi = stepper.x1(), f_hi = stepper.f1();
+  LocatorOptions single = locator;
+  single.samples = 1;
+  state_type s;
+  auto restep_failure = [&](const StepResult& r) {
+    return Refinement<T>{te, std::string(Stepper::name) + ": re-step to refine the " +
+                                 std::string(to_string(kind)) + " event failed: " + r.reason};
+  };
+  T change = hi - lo;
+  for (int iteration = 0; iteration < kMaxRefinements; ++iteration) {
+    if (const StepResult r = stepper.restep(sys, te, xe); !r.ok) return restep_failure(r);
+    const T ge = event_value(kind, xe);
+    if (is_pre_event(ge, dir)) {
+      lo = te;
+      x_lo = xe;
+      sys(x_lo, f_lo, lo);
+    } else {
+      hi = te;
+      x_hi = xe;
+      sys(x_hi, f_hi, hi);
+      if (ge == 0) return {te, {}};
+    }
+    auto g = [&](T t) {
+      hermite_interpolate(lo, x_lo, f_lo, hi, x_hi, f_hi, t, s);
+      return event_value(kind, s);
+    };
+    const auto next = locate_first_crossing(g, lo, hi, event_value(kind, x_lo), dir, single);
+    if (!next) break;  // cannot happen: g(lo) is pre-event, g(hi) is not
+    change = *next - te;
+    te = *next;
+    const T ulps = 64 * std::numeric_limits<T>::epsilon() * (1 + abs_of(te));
+    if (abs_of(change) <= ulps || hi - lo <= ulps || state_resolved(change, xe)) {
+      if (const StepResult r = stepper.restep(sys, te, xe); !r.ok) return restep_failure(r);
+      return {te, {}};
+    }
+  }
+  std::ostringstream os;
+  os << Stepper::name << ": the " << to_string(kind)
+     << " event at tau = " << static_cast<double>(te) << " did not converge in " << kMaxRefinements
+     << " Hermite re-steps (last change " << static_cast<double>(change) << ", bracket width "
+     << static_cast<double>(hi - lo)
+     << "): re-steps of different lengths disagree, as when the step is too large for the "
+        "scene's stiffness; use a smaller --dt or --rtol, or an implicit integrator";
+  return {te, os.str()};
+}
+
+// The normalised measures of a finished run for consistency.h (before conversion to SI).
+template <class System>
+ConsistencyMeasures consistency_measures(const NormalisedRun<System>& run, const System& sys) {
+  using T = typename System::value_type;
+  auto d = [](const T& v) { return static_cast<double>(v); };
+  const auto& x = run.x_end;
+  ConsistencyMeasures m;
+  m.steps = run.steps;
+  m.restitution_steps = run.steps - run.steps_alpha_max;
+  const double energy_scale = sys.force_scale * sys.length;  // m v0^2 [J]
+  const double final_kinetic = 0.5 * d(x[System::W]) * d(x[System::W]);
+  const double stored =
+      d(sys.law.stored_energy(run.branch, T(sys.length * sys.z(x)))) / energy_scale;
+  double viscous = 0.0;
+  if constexpr (System::has_dashpot) viscous = d(x[System::WV]);
+  double plastic = 0.0;
+  if (auto closed = sys.law.hysteresis_work(run.branch))
+    plastic = *closed / energy_scale;
+  else
+    plastic = d(x[System::WA]) - viscous - stored;
+  m.ledger_residual = 0.5 - final_kinetic - stored - plastic - viscous;
+  if (run.status == ImpactStatus::separated && run.has_max_displacement) {
+    const T J_c = run.x_alpha_max[System::J];
+    const T Wa_c = run.x_alpha_max[System::WA];
+    m.has_restitution = true;
+    m.e = -d(x[System::W]);
+    m.e_poisson = d((x[System::J] - J_c) / J_c);
+    m.e_energetic_sq = d((Wa_c - x[System::WA]) / Wa_c);
+  }
+  return m;
+}
+
+// One impact integrated by Stepper: the phase loop of the comment at the top of this file.
+template <class Stepper, class System>
+class ImpactDriver {
+ public:
+  using T = typename System::value_type;
+  using state_type = typename System::state_type;
+  using Earliest = EarliestCrossing<T, ActiveEvents::capacity>;
+
+  ImpactDriver(System& sys, const IntegratorOptions& opt, const SampleObserver<System>* observer,
+               int samples_per_step)
+      : sys_(sys),
+        opt_(opt),
+        observer_(observer),
+        samples_per_step_(samples_per_step),
+        stepper_(opt) {}
+
+  NormalisedRun<System> run() {
+    begin();
+    try {
+      return phases();
+    } catch (const EventLocationError& err) {  // a root finder out of iterations
+      return fail(FailureKind::event_location, std::string(Stepper::name) + ": " + err.what());
+    }
+  }
+
+ private:
+  // The phase loop; EventLocationError from the locator or the refinement propagates to run().
+  NormalisedRun<System> phases() {
+    for (;;) {
+      if (!resume_ && !advance()) return fail(failure_kind_, std::move(failure_));
+      resume_ = false;
+      const T t0 = scan_t0_, t1 = stepper_.t1();
+      const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
+      const Earliest earliest = locate(active);
+      if (!earliest.t) {
+        emit_samples(t0, t1);
+        if (sys_.branch.phase == Phase::unloading)
+          if (const auto e_bound = capture_after_step(sys_, stepper_.x1(), stepper_.steps(), opt_))
+            return finish(ImpactStatus::captured, t1, stepper_.x1(), *e_bound);
+        continue;
+      }
+      T te = *earliest.t;
+      state_type xe;
+      if (std::optional<std::string> why = event_state(active, earliest.first, te, xe))
+        return fail(FailureKind::event_refinement, std::move(*why));
+      if (retake_to_separation(active.kinds[earliest.first], te, xe)) continue;
+      emit_samples(t0, te);
+      const Fired fired = fire(active, earliest, te, xe);
+      if (fired.law_domain) return fail(FailureKind::law_domain, std::move(*fired.law_domain));
+      if (fired.separated) return separate(te, xe);
+      if constexpr (Stepper::dense_output) {
+        if (opt_.locate_events && !fired.branch_changed && te < t1) {
+          resume_ = true;  // scan the rest of this step from the event on
+          scan_t0_ = te;
+          scan_x0_ = xe;
+          continue;
+        }
+      }
+      stepper_.start(sys_, te, xe);
+    }
+  }
+
+  // The step that crosses the separation is taken again from its start, ending at the event,
+  // where its stages saw the law where the solution is not smooth in tau, as at onset; the
+  // embedded error estimate assumes smoothness and can pass a step whose interpolant at the
+  // event is wrong by far more than the tolerance. Two such places (separation_not_smooth):
+  //   - the step ran past z = 0, where a law's formula changes (the elastoplastic unloading
+  //     below z = 0 is its tension side): paper scene, dop853, rtol 1e-8, v0 = 0.2939 m/s,
+  //     zeta = 0.147 passed every step (largest estimate 0.86) with e off by 3.0e-6;
+  //   - the force vanishes together with its stiffness (F ~ z^{3/2} at z = 0: Hertz, an
+  //     elastic unloading, a plastic set far below z_m): v0 = 0.1149 m/s, zeta = 0.264 passed
+  //     a step at 0.8 of the tolerance with the energy ledger off by 4.3e-6 m v0^2.
+  // The retaken step's error control sees only the smooth side; the event is then located on
+  // the steps that follow. At most kSeparationRetakes times an impact: each retake ends nearer
+  // the root, and a step that starts near it has little of its length past it. True when the
+  // step is to be retaken.
+  static constexpr int kSeparationRetakes = 2;
+  bool retake_to_separation(EventKind kind, T te, const state_type& xe) {
+    if constexpr (!Stepper::dense_output || !requires(Stepper & s) { s.propose_step(T{}); }) {
+      return false;
+    } else {
+      if (opt_.fixed_step || !opt_.locate_events || separation_retakes_ >= kSeparationRetakes)
+        return false;
+      if (event_row(kind).action != EventAction::end_contact || !(te < stepper_.t1())) return false;
+      if (!separation_not_smooth(xe)) return false;
+      ++separation_retakes_;
+      stepper_.start(sys_, scan_t0_, scan_x0_);
+      stepper_.propose_step(te - scan_t0_);
+      return true;
+    }
+  }
+
+  // The step's end past z = 0, or the law's stiffness at the separation state xe below a tenth
+  // of the unloading secant F(z_m) / (z_m - z): the force leaves zero with a vanishing slope.
+  // For the elastoplastic unloading, whose slope at the set z_f is 1.5 K_h sqrt(z_f), that is
+  // z_f / z_m below about 0.004.
+  bool separation_not_smooth(const state_type& xe) const {
+    if (!(sys_.z(stepper_.x1()) > 0)) return true;
+    const typename NormalisedRun<System>::Event* peak = nullptr;
+    for (const auto& ev : run_.events)
+      if (ev.kind == EventKind::max_compression) peak = &ev;
+    if (!peak) return true;
+    const T span = sys_.z(peak->x) - sys_.z(xe);
+    if (!(span > 0)) return true;
+    using std::abs;
+    return abs(sys_.stiffness(xe)) < T(0.1) * abs(peak->force) / span;
+  }
+
+  // What acting on the events of one time did.
+  struct Fired {
+    bool separated = false;
+    bool branch_changed = false;            // the law's next branch starts at the event
+    std::optional<std::string> law_domain;  // the law is undefined there: why
+  };
+
+  void begin() {
+    const state_type x = System::initial_state();
+    const T tau = 0;
+    sys_.branch = typename System::history_type{};
+    sys_.tension = law_allows_tension(sys_.law);
+    // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
+    // and separation or capture, with room for a law with more segments
+    run_.events.reserve(8);
+    run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
+    if (observer_) (*observer_)(0.0, x, sys_);
+    if constexpr (requires { Stepper::starts_from_onset_series; }) {
+      if (const std::optional<SeriesStart> start = series_start()) {
+        stepper_.start(sys_, start->tau, start->x);
+        // the solution's own time scale there is tau itself (F ~ tau^{3/2})
+        stepper_.propose_step(start->tau);
+        if (observer_) emit_series_samples(*start);
+        return;
+      }
+    }
+    stepper_.start(sys_, tau, x);
+  }
+
+  struct SeriesStart {
+    T tau;
+    state_type x;
+    double kappa, beta;  // the series' F_bar = kappa z^{3/2} and 2 zeta (onset_series.h)
+  };
+
+  // Trajectory samples on (0, tau0], from the series like the state at tau0.
+  void emit_series_samples(const SeriesStart& start) {
+    for (int k = 1; k <= samples_per_step_; ++k) {
+      const double tau = static_cast<double>(start.tau) * k / samples_per_step_;
+      (*observer_)(tau, series_state(onset_series_state(start.kappa, start.beta, tau)), sys_);
+    }
+  }
+
+  static state_type series_state(const OnsetSeriesState& s) {
+    state_type x{};
+    x[System::A] = s.a;
+    x[System::W] = s.w;
+    if constexpr (System::has_dashpot) {
+      x[System::Z] = s.z;
+      x[System::WV] = s.Wv;
+    }
+    x[System::J] = s.J;
+    x[System::WA] = s.Wa;
+    return x;
+  }
+
+  // Where the integration starts past onset (onset_series.h): the tau at which the series'
+  // truncation bound is rtol, kept below half the end of the Hertzian onset (z <= tau, so the
+  // first kink, z_y, is met by the integrator and located as an event). nullopt where the
+  // series does not apply: a law without a Hertzian onset, a fixed step, the 50-digit
+  // reference (T is not double), or options.onset_series off.
+  std::optional<SeriesStart> series_start() const {
+    if constexpr (!std::is_same_v<T, double>) {
+      return std::nullopt;
+    } else {
+      if (opt_.fixed_step || !opt_.onset_series || !opt_.locate_events) return std::nullopt;
+      const std::optional<HertzianOnset> onset = hertzian_onset(sys_.law);
+      if (!onset) return std::nullopt;
+      const double L = sys_.length;
+      const double kappa = onset->K * L * std::sqrt(L) * sys_.inverse_force_scale;
+      const double beta = System::has_dashpot ? sys_.two_zeta : 0.0;
+      const double tau =
+          std::min(onset_series_reach(kappa, beta, opt_.rtol), 0.5 * onset->z_end / L);
+      if (!(tau > 0 && std::isfinite(tau) && std::isfinite(kappa))) return std::nullopt;
+      return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau)), kappa, beta};
+    }
+  }
+
+  // One accepted step; false when a limit is reached or the stepper fails (failure_ says why).
+  bool advance() {
+    if (stepper_.steps() >= opt_.max_steps) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
+         << " steps (tau = " << static_cast<double>(stepper_.t1()) << ")";
+      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
+      // dashpot time scale below the contact's), which an explicit stepper must resolve
+      if (System::has_dashpot && sys_.two_zeta > 2.0)
+        os << "; a stiff scene (zeta = " << sys_.two_zeta / 2
+           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
+      else
+        os << "; raise --max-steps or loosen --rtol";
+      failure_ = os.str();
+      failure_kind_ = FailureKind::step_limit;
+      return false;
+    }
+    if (stepper_.t1() > opt_.tau_max) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
+      failure_ = os.str();
+      failure_kind_ = FailureKind::time_limit;
+      return false;
+    }
+    const StepResult step = stepper_.step(sys_);
+    if (!step.ok) {
+      failure_ = step.reason;
+      failure_kind_ = failure_of_step(step.code);
+      return false;
+    }
+    scan_t0_ = stepper_.t0();
+    scan_x0_ = stepper_.x0();
+    return true;
+  }
+
+  // The earliest crossing of the active events on the part of the step being scanned.
+  Earliest locate(const ActiveEvents& active) {
+    auto interpolate = [this](const T& t, state_type& s) {
+      if constexpr (requires { stepper_.interpolate(sys_, t, s, System::event_components); })
+        stepper_.interpolate(sys_, t, s, System::event_components);
+      else
+        stepper_.interpolate(sys_, t, s);
+    };
+    auto root = [this, &active](int i, const state_type& s) {
+      return event_root(active.kinds[i], sys_, s);
+    };
+    // the roots at this step's start are those at the last one's end when that step fired
+    // nothing and the same roots are active (same branch): not evaluated twice
+    const bool reuse = roots_at_end_.valid && roots_at_end_.size == active.size() &&
+                       roots_at_end_.kinds == active.kinds;
+    Earliest earliest =
+        locate_earliest(scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate, active.roots,
+                        root, opt_.locator, opt_.locate_events, reuse ? &roots_at_end_.g : nullptr);
+    roots_at_end_ = {!earliest.t, active.size(), active.kinds, earliest.g1};
+    return earliest;
+  }
+
+  // The active roots' values at the end of the last step located on, for the next one.
+  struct RootsAtEnd {
+    bool valid = false;  // no event fired on that step: the next starts from its end
+    int size = 0;
+    std::array<EventKind, ActiveEvents::capacity> kinds{};
+    std::array<T, ActiveEvents::capacity> g{};
+  };
+
+  // The state xe at the event time te: on the dense output, or refined by re-stepping (te
+  // moves to the refined time) for a stepper without one. A refinement that fails: why.
+  std::optional<std::string> event_state(const ActiveEvents& active, int first, T& te,
+                                         state_type& xe) {
+    if (!opt_.locate_events) {
+      xe = stepper_.x1();
+    } else if constexpr (Stepper::dense_output) {
+      stepper_.interpolate(sys_, te, xe);
+    } else {
+      const EventKind kind = active.kinds[first];
+      auto value = [this](EventKind k, const state_type& s) { return event_root(k, sys_, s); };
+      const Refinement<T> refined =
+          refine_on_restep(stepper_, sys_, kind, event_row(kind).direction, te, xe, value, opt_);
+      if (!refined.failure.empty()) return refined.failure;
+      te = refined.tau;  // events of other kinds are judged at the refined state (same step)
+    }
+    return std::nullopt;
+  }
+
+  // Acts on every armed event that has happened by te: coincident ones together (dz/dt = 0 and
+  // dalpha/dt = 0 without a dashpot), and any whose root is already past at the event state,
+  // which a restart there could no longer see.
+  Fired fire(const ActiveEvents& active, const Earliest& earliest, T te, const state_type& xe) {
+    const T coincide = T(1e-12) * (1 + (te < 0 ? -te : te));
+    Fired fired;
+    for (int i = 0; i < active.size(); ++i) {
+      const EventKind kind = active.kinds[i];
+      const Direction dir = active.roots.roots[i].direction;
+      const bool happened = i == earliest.first ||
+                            (earliest.found[i] && *earliest.found[i] <= te + coincide) ||
+                            (earliest.armed[i] && !is_pre_event(event_root(kind, sys_, xe), dir));
+      if (!happened) continue;
+      run_.events.push_back({kind, te, xe, sys_.force(xe)});
+      const EventAction action = event_row(kind).action;
+      fired.branch_changed = fired.branch_changed || changes_branch(action);
+      try {
+        act(action, te, xe);
+      } catch (const LawDomainError& err) {
+        fired.law_domain = err.what();
+        return fired;
+      }
+      if (action == EventAction::end_contact) fired.separated = true;
+    }
+    return fired;
+  }
+
+  // What an event means (impact_events.h), done at time te and state xe.
+  void act(EventAction action, T te, const state_type& xe) {
+    switch (action) {
+      case EventAction::next_segment:
+        law_next_segment(sys_.law, sys_.branch);
+        break;
+      case EventAction::begin_unloading:
+        if (!System::rate_dependent) {
+          run_.F_max = sys_.force(xe);
+          run_.tau_F_max = te;
+        }
+        run_.tau_z_max = te;
+        law_begin_unloading(sys_.law, sys_.branch, T(sys_.length * sys_.z(xe)));
+        record_pull_off_work();
+        break;
+      case EventAction::record_alpha_max:
+        run_.has_max_displacement = true;
+        found_.max_displacement = true;
+        run_.tau_alpha_max = te;
+        run_.x_alpha_max = xe;
+        run_.steps_alpha_max = stepper_.steps();
+        break;
+      case EventAction::record_peak_force:
+        found_.peak_force = true;
+        run_.F_max = sys_.force(xe);
+        run_.tau_F_max = te;
+        break;
+      case EventAction::end_contact:
+        break;
+    }
+  }
+
+  // The depth of the unloading branch's attractive well, -S(z_f) (law.h: separation_work),
+  // computed once where unloading begins (capture.h, criterion 4); 0 without a well.
+  void record_pull_off_work() {
+    const double z_f = static_cast<double>(sys_.branch.z_perm);
+    const std::optional<double> S = separation_work(sys_.law, sys_.branch, z_f);
+    sys_.pull_off_work = S ? std::max(0.0, -*S * sys_.inverse_force_scale / sys_.length) : 0.0;
+  }
+
+  // F = 0 at (te, xe): a rebound, or, with the impactor still approaching, grazing capture
+  // (capture.h) or a failure that says so rather than return a negative COR.
+  NormalisedRun<System> separate(T te, const state_type& xe) {
+    if (!(xe[System::W] > 0)) return finish(ImpactStatus::separated, te, xe, 0.0);
+    const double w = static_cast<double>(xe[System::W]);
+    if (const auto e_bound = grazing_capture(System::has_dashpot, w, stepper_.steps(), opt_))
+      return finish(ImpactStatus::captured, te, xe, *e_bound);
+    std::ostringstream os;
+    os << Stepper::name << ": contact force reached zero at tau = " << static_cast<double>(te)
+       << " with the impactor still approaching (alpha_dot = +" << w
+       << " v0): the integration error exceeds the remaining force; tighten --rtol or use "
+          "another integrator";
+    return fail(FailureKind::still_approaching, os.str());
+  }
+
+  void emit_samples(T a, T b) {
+    if (!observer_) return;
+    state_type s;
+    for (int k = 1; k <= samples_per_step_; ++k) {
+      const T t = a + (b - a) * k / samples_per_step_;
+      stepper_.interpolate(sys_, t, s);
+      (*observer_)(static_cast<double>(t), s, sys_);
+    }
+  }
+
+  NormalisedRun<System> fail(FailureKind kind, std::string why) {
+    run_.status = ImpactStatus::failed;
+    run_.failure = kind;
+    run_.reason = std::move(why);
+    run_.tau_end = stepper_.t1();
+    run_.x_end = stepper_.x1();
+    run_.branch = sys_.branch;
+    run_.steps = stepper_.steps();
+    return std::move(run_);  // the run is done: move, no copy of its events
+  }
+
+  // A run that ends separated or captured at (tau_end, x_end), checked for consistency.
+  NormalisedRun<System> finish(ImpactStatus status, T tau_end, const state_type& x_end,
+                               double e_bound) {
+    run_.status = status;
+    run_.tau_end = tau_end;
+    run_.x_end = x_end;
+    run_.branch = sys_.branch;
+    run_.steps = stepper_.steps();
+    run_.e_bound = e_bound;
+    if (status == ImpactStatus::captured)
+      run_.events.push_back({EventKind::capture, tau_end, x_end, sys_.force(x_end)});
+    if (opt_.check_consistency) {
+      std::string why = consistency_failure(consistency_measures(run_, sys_), opt_, Stepper::name);
+      if (!why.empty()) {
+        run_.status = ImpactStatus::failed;
+        run_.failure = FailureKind::inconsistent;
+        run_.reason = std::move(why);
+      }
+    }
+    return std::move(run_);  // the run is done: move, no copy of its events
+  }
+
+  System& sys_;
+  const IntegratorOptions& opt_;
+  const SampleObserver<System>* observer_;
+  int samples_per_step_;
+  Stepper stepper_;
+  NormalisedRun<System> run_;
+  EventsFound found_;
+  // A dense-output step goes on past an event that changes no branch: `resume_` says so, and
+  // the scan of the current step starts at (scan_t0_, scan_x0_).
+  bool resume_ = false;
+  RootsAtEnd roots_at_end_;
+  int separation_retakes_ = 0;                          // retake_to_separation() so far
+  std::string failure_;                                 // why advance() could not take a step
+  FailureKind failure_kind_ = FailureKind::integrator;  // and its code
+  T scan_t0_ = 0;
+  state_type scan_x0_{};
+};
+
+template <class Stepper, class System>
+NormalisedRun<System> run_impact(System& sys, const IntegratorOptions& opt,
+                                 const SampleObserver<System>* observer = nullptr,
+                                 int samples_per_step = 4) {
+  return ImpactDriver<Stepper, System>(sys, opt, observer, samples_per_step).run();
+}
+
+}  // namespace ivv

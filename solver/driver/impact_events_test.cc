@@ -1,0 +1,124 @@
+// The impact's event table: which roots are active on a step, their directions and
+// monotonicity, and that each root vanishes where its event is (impact_events.h).
+#include "solver/driver/impact_events.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/driver/impact_system.h"
+#include "solver/laws/elastoplastic.h"
+#include "solver/laws/hunt_crossley.h"
+
+namespace ivv {
+namespace {
+
+// Root values are sums of a few O(1) normalised terms: exact to a few ulps.
+constexpr double kRootTolerance = 1e-15;
+
+// Normalised units throughout (length = velocity = force scale = 1): K_h = 1, z_y = 0.25.
+using Plastic = ImpactSystem<ElastoplasticLaw, true>;
+Plastic plastic_system() {
+  Plastic sys;
+  sys.law = {1.0, 0.25, 1.5 * 0.5};
+  sys.two_zeta = 0.2;
+  return sys;
+}
+
+std::vector<EventKind> kinds(const ActiveEvents& a) {
+  return {a.kinds.begin(), a.kinds.begin() + a.size()};
+}
+
+TEST(ImpactEvents, TableFollowsEventKindAndOnlyKinksAndMaxCompressionChangeTheBranch) {
+  for (const ImpactEventRow& row : kImpactEvents) {
+    EXPECT_EQ(event_row(row.kind).kind, row.kind);
+    EXPECT_EQ(changes_branch(row.action),
+              row.kind == EventKind::yield || row.kind == EventKind::max_compression);
+  }
+  EXPECT_EQ(event_row(EventKind::yield).direction, Direction::rising);
+  EXPECT_EQ(event_row(EventKind::separation).action, EventAction::end_contact);
+}
+
+TEST(ImpactEvents, LoadingBelowYieldWatchesTheLawsKinkMaxCompressionAndMaxDisplacement) {
+  Plastic sys = plastic_system();
+  const Plastic::state_type x0{0.1, 0.9, 0.1, 0, 0, 0}, x1{0.2, 0.8, 0.2, 0, 0, 0};
+  const ActiveEvents a = active_events(sys, EventsFound{}, x0, x1);
+  EXPECT_EQ(kinds(a), (std::vector<EventKind>{EventKind::yield, EventKind::max_compression,
+                                              EventKind::max_displacement}));
+  // z' > 0 at both ends: z - z_y is monotone, no probing
+  EXPECT_TRUE(a.roots.roots[0].monotone);
+  // the yield root is z minus the segment end the law declares
+  Plastic::state_type at_yield = x1;
+  at_yield[Plastic::Z] = 0.25;
+  EXPECT_NEAR(event_root(EventKind::yield, sys, at_yield), 0.0, kRootTolerance);
+  EXPECT_LT(event_root(EventKind::yield, sys, x1), 0.0);  // pre-event side of a rising root
+}
+
+TEST(ImpactEvents, YieldIsProbedOnAStepThatAlsoReachesMaxCompression) {
+  Plastic sys = plastic_system();
+  // z' = w - 2 zeta F: at x1 the force 0.2^{1.5} = 0.089 with w = 0.001 gives z' < 0
+  const Plastic::state_type x0{0.1, 0.5, 0.1, 0, 0, 0}, x1{0.2, 0.001, 0.2, 0, 0, 0};
+  const ActiveEvents a = active_events(sys, EventsFound{}, x0, x1);
+  ASSERT_EQ(a.kinds[0], EventKind::yield);
+  EXPECT_FALSE(a.roots.roots[0].monotone);
+}
+
+TEST(ImpactEvents, UnloadingEndsAtSeparationOnceMaxDisplacementIsFound) {
+  Plastic sys = plastic_system();
+  law_next_segment(sys.law, sys.branch);  // yielded: the permanent set z_f > 0
+  law_begin_unloading(sys.law, sys.branch, 0.5);
+  ASSERT_GT(sys.branch.z_perm, 0.1);
+  const Plastic::state_type x{0.6, -0.5, 0.45, 0, 0, 0};
+  const ActiveEvents a = active_events(sys, EventsFound{true, false}, x, x);
+  EXPECT_EQ(kinds(a), std::vector<EventKind>{EventKind::separation});
+  EXPECT_TRUE(a.roots.roots[0].monotone);  // F falls with z on a rate-independent unloading
+  Plastic::state_type at_perm = x;
+  at_perm[Plastic::Z] = sys.branch.z_perm;
+  EXPECT_NEAR(event_root(EventKind::separation, sys, at_perm), 0.0, kRootTolerance);
+}
+
+TEST(ImpactEvents, RateDependentLawProbesPeakForceAndSeparation) {
+  ImpactSystem<HuntCrossleyLaw, false> sys;
+  sys.law = {1.0, 0.5};
+  const ImpactSystem<HuntCrossleyLaw, false>::state_type x0{0.1, 0.9, 0, 0}, x1{0.2, 0.8, 0, 0};
+  const ActiveEvents loading = active_events(sys, EventsFound{}, x0, x1);
+  EXPECT_EQ(kinds(loading),
+            (std::vector<EventKind>{EventKind::max_compression, EventKind::max_displacement,
+                                    EventKind::peak_force}));
+  EXPECT_FALSE(loading.roots.roots[2].monotone);
+  law_begin_unloading(sys.law, sys.branch, 0.5);
+  const ActiveEvents unloading = active_events(sys, EventsFound{true, true}, x0, x1);
+  EXPECT_EQ(kinds(unloading), std::vector<EventKind>{EventKind::separation});
+  EXPECT_FALSE(unloading.roots.roots[0].monotone);  // F = K z^{3/2} (1 + mu z') is not
+}
+
+// The locator interpolates only System::event_components (z and w) for the roots: every root,
+// on the loading and the unloading branch, must give the same value when the other components
+// are NaN.
+template <class System>
+void expect_roots_read_only_event_components(System sys, typename System::state_type x) {
+  typename System::state_type only = x;
+  for (std::size_t i = 0; i < only.size(); ++i)
+    if (std::find(System::event_components.begin(), System::event_components.end(), i) ==
+        System::event_components.end())
+      only[i] = std::nan("");
+  for (bool unloading : {false, true}) {
+    if (unloading) law_begin_unloading(sys.law, sys.branch, 0.3);
+    for (const ImpactEventRow& row : kImpactEvents) {
+      if (row.kind == EventKind::yield && !law_segment_end(sys.law, sys.branch)) continue;
+      EXPECT_EQ(event_root(row.kind, sys, only), event_root(row.kind, sys, x))
+          << "event " << static_cast<int>(row.kind) << (unloading ? ", unloading" : ", loading");
+    }
+  }
+}
+
+TEST(ImpactEvents, RootsReadOnlyTheComponentsTheLocatorInterpolates) {
+  expect_roots_read_only_event_components(plastic_system(), {0.1, 0.9, 0.2, 0.05, 0.04, 0.01});
+  ImpactSystem<HuntCrossleyLaw, false> hc;
+  hc.law = {1.0, 0.2};
+  expect_roots_read_only_event_components(hc, {0.2, -0.3, 0.05, 0.04});
+}
+
+}  // namespace
+}  // namespace ivv

@@ -1,0 +1,60 @@
+#include "solver/driver/onset_series.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/driver/onset_series_coefficients.h"
+
+namespace ivv {
+namespace {
+
+using onset_series::kDegree;
+
+// sum_{a + b <= kDegree} c[a][b] p^a r^b, by Horner in r inside Horner in p.
+double evaluate(const double (&c)[kDegree + 1][kDegree + 1], double p, double r) {
+  double sum = 0;
+  for (int a = kDegree; a >= 0; --a) {
+    double row = 0;
+    for (int b = kDegree - a; b >= 0; --b) row = row * r + c[a][b];
+    sum = sum * p + row;
+  }
+  return sum;
+}
+
+}  // namespace
+
+OnsetSeriesState onset_series_state(double kappa, double beta, double tau) {
+  const double sqrt_tau = std::sqrt(tau);
+  const double r = kappa * tau * tau * sqrt_tau;   // kappa tau^{5/2}
+  const double p = beta * kappa * tau * sqrt_tau;  // beta kappa tau^{3/2}
+  OnsetSeriesState s;
+  s.tau = tau;
+  s.J = r * evaluate(onset_series::kImpulse, p, r);
+  s.w = 1 - s.J;
+  s.a = tau - tau * r * evaluate(onset_series::kImpulseIntegral, p, r);
+  s.z = s.a - beta * s.J;
+  s.Wa = s.J - 0.5 * s.J * s.J;
+  s.Wv = p * r * evaluate(onset_series::kDashpotWork, p, r);
+  return s;
+}
+
+double onset_series_error_bound(double kappa, double beta, double tau) {
+  const double sqrt_tau = std::sqrt(tau);
+  const double s = std::max(kappa * tau * tau * sqrt_tau, beta * kappa * tau * sqrt_tau);
+  return onset_series::kErrorConstant * std::pow(s, kDegree + 1);
+}
+
+double onset_series_dashpot_work_error_bound(double kappa, double beta, double tau) {
+  return onset_series_error_bound(kappa, beta, tau) * onset_series::kDashpotWorkErrorConstant /
+         onset_series::kErrorConstant;
+}
+
+double onset_series_reach(double kappa, double beta, double tolerance) {
+  // max(p, r) <= s_max  <=>  tau <= (s_max/kappa)^{2/5} and tau <= (s_max/(beta kappa))^{2/3}
+  const double s_max = std::pow(tolerance / onset_series::kErrorConstant, 1.0 / (kDegree + 1));
+  double tau = std::pow(s_max / kappa, 0.4);
+  if (beta > 0) tau = std::min(tau, std::pow(s_max / (beta * kappa), 2.0 / 3.0));
+  return tau;
+}
+
+}  // namespace ivv

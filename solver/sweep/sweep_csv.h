@@ -1,0 +1,47 @@
+// The rows of a sweep's CSV: one line a point, in grid order (solver/sweep/sweep_grid.h).
+//
+// Columns: v0, zeta, one column per scene axis (named by its key, e.g. structure.thickness),
+// then e, e_poisson, e_energetic, F_max, t_F_max, t_contact, z_max, alpha_max, z_perm,
+// energy_residual, steps, route, integrator, status, reason; sweep_csv_columns() gives each
+// with its unit. The inputs (v0, zeta, the axes) are in shortest round-trip form
+// (std::to_chars: 0.1, not 0.10000000000000001; each reads back as the same double, so a row can
+// be re-run exactly with `ivv simulate --v0 V --zeta Z`), results at 12 significant digits.
+// route and integrator say what produced the row (ImpactResult::route, ::integrator): with
+// --model auto and --integrator auto they differ from point to point. A failed row leaves
+// every result column empty (never a plausible 0), keeps steps and gives the reason (quoted,
+// RFC 4180).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solver/result.h"
+#include "solver/sweep/sweep_grid.h"
+
+namespace ivv {
+
+struct SweepColumn {
+  std::string name;
+  std::string unit;  // SI unit; "-" for a dimensionless number or a count; "" for a text column
+};
+
+// The columns of the CSV of a sweep over `axes` (none: the v0 x zeta grid), in order.
+std::vector<SweepColumn> sweep_csv_columns(const std::vector<SceneAxis>& axes = {});
+// "v0,zeta,...,reason\n"
+std::string sweep_csv_header(const std::vector<SceneAxis>& axes = {});
+// "v0 [m/s], zeta [-], ..., reason": the columns with their units, for --help and messages.
+std::string sweep_csv_columns_text(const std::vector<SceneAxis>& axes = {});
+
+// "v0,zeta,axis values,": the start of a point's row (a journal row read back must begin so).
+std::string sweep_csv_inputs(const PointInputs& inputs);
+// The row of a point (numbers by std::to_chars, solver/format.h), appended to `row`: no
+// allocation once its capacity suffices.
+void append_sweep_csv_row(std::string& row, const PointInputs& inputs, const ImpactResult& result);
+std::string sweep_csv_row(const PointInputs& inputs, const ImpactResult& result);
+// The same for a point of a v0 x zeta grid without scene axes.
+std::string sweep_csv_row(double v0, double zeta, const ImpactResult& result);
+
+// The index of column `name` in the CSV of a sweep with `axis_count` scene axes.
+int sweep_csv_column_index(std::string_view name, std::size_t axis_count);
+
+}  // namespace ivv

@@ -1,0 +1,358 @@
+#include "solver/sweep/sweep_sink.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "scene/input_error.h"
+#include "solver/atomic_file.h"
+#include "solver/format.h"
+#include "solver/sweep/sweep_csv.h"
+
+namespace ivv {
+namespace fs = std::filesystem;
+
+namespace {
+
+// FNV-1a, 64 bit: a stable fingerprint of a sweep's inputs for its journal.
+std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 0xcbf29ce484222325ULL) {
+  for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ULL;
+  return h;
+}
+
+// One journal line "index checksum row" (row without its newline): the index and the row
+// (newline restored) when the index is below `total` and the checksum matches; nullopt for a
+// line that was edited, cut short or is not a journal row.
+std::optional<std::pair<std::size_t, std::string>> parse_journal_line(const std::string& line,
+                                                                      std::size_t total) {
+  const std::size_t space = line.find(' ');
+  if (space == std::string::npos || space == 0 || space + 18 > line.size()) return std::nullopt;
+  if (line[space + 17] != ' ') return std::nullopt;
+  char* end = nullptr;
+  const unsigned long long index = std::strtoull(line.c_str(), &end, 10);
+  if (end != line.c_str() + space || index >= total) return std::nullopt;
+  const unsigned long long sum = std::strtoull(line.c_str() + space + 1, &end, 16);
+  if (end != line.c_str() + space + 17) return std::nullopt;
+  std::string row = line.substr(space + 18) + '\n';
+  if (fnv1a(row) != sum) return std::nullopt;
+  return std::make_pair(static_cast<std::size_t>(index), std::move(row));
+}
+
+[[noreturn]] void io_error(const fs::path& path, const std::string& what) {
+  throw std::runtime_error("cannot write " + path.string() + ": " + what);
+}
+
+}  // namespace
+
+fs::path SweepSink::journal_path() const {
+  return fs::path(options_.csv.string() + ".journal");
+}
+
+SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
+    : options_(std::move(options)), total_(point_count(request)), axis_count_(request.axes.size()) {
+  validate(request);  // before any file is touched
+  if (!options_.stream) {
+    open_journal(request);
+    return;
+  }
+  if (options_.resume)
+    throw InputError("--resume",
+                     "a sweep to standard output (--out -) keeps no journal, so it cannot be "
+                     "resumed: give --out FILE to have one");
+  std::lock_guard lock(mutex_);
+  write_row(sweep_csv_header(request.axes));
+  if (std::fflush(options_.stream) != 0) stream_failed();
+}
+
+namespace {
+// The journal's first line: its format's version, a fingerprint of everything that makes the
+// sweep (the description, the columns, every value of every axis) and the point count.
+std::string journal_header(const SweepRequest& request, const std::string& description,
+                           std::size_t total) {
+  std::string fingerprint = description + '\n' + sweep_csv_header(request.axes);
+  for (double v : request.velocities) append_shortest(fingerprint, v), fingerprint += ' ';
+  fingerprint += '\n';
+  for (double z : request.zetas) append_shortest(fingerprint, z), fingerprint += ' ';
+  if (request.scene_dashpot) fingerprint += "the scene's dashpot";
+  for (const SceneAxis& axis : request.axes) {
+    fingerprint += '\n' + axis.key + ' ';
+    for (double v : axis.values) append_shortest(fingerprint, v), fingerprint += ' ';
+  }
+  // version 3: inputs in shortest round-trip form (version 2 wrote 17 digits)
+  char header[96];
+  std::snprintf(header, sizeof header, "ivv-sweep-journal 3 %016llx %zu",
+                static_cast<unsigned long long>(fnv1a(fingerprint)), total);
+  return header;
+}
+}  // namespace
+
+void SweepSink::open_journal(const SweepRequest& request) {
+  const fs::path csv = options_.csv;
+  if (csv.empty()) throw InputError("--out", "must name a file");
+  std::error_code ec;
+  if (fs::is_directory(csv, ec)) throw InputError("--out", csv.string() + " is a directory");
+  const fs::path journal = journal_path();
+  const fs::path partial = csv.string() + ".partial";
+  // what a run killed while committing left behind (its PID no longer runs)
+  remove_stale_temporaries(csv);
+  if (!options_.sidecar.empty()) remove_stale_temporaries(options_.sidecar);
+
+  const std::string journal_header = ivv::journal_header(request, options_.description, total_);
+
+  // A journal without a whole first line was cut off as it was created: it holds nothing.
+  bool have_journal = false;
+  if (fs::exists(journal, ec)) {
+    std::ifstream in(journal, std::ios::binary);
+    std::string line;
+    have_journal = std::getline(in, line) && !in.eof();
+  }
+  if (have_journal && !options_.resume)
+    throw InputError("--resume", journal.string() +
+                                     " exists: an interrupted sweep left it. Add --resume to "
+                                     "continue it, or delete it to start over");
+  std::ifstream journal_in;
+  std::uintmax_t valid = 0;
+  if (options_.resume && have_journal) {
+    journal_in.open(journal, std::ios::binary);
+    std::string line;
+    if (!std::getline(journal_in, line) || journal_in.eof() || line != journal_header)
+      throw InputError("--resume", journal.string() +
+                                       " was written by another sweep (scene, law, integrator, "
+                                       "tolerances or grid differ) or by another version of "
+                                       "ivv: delete it or rerun that sweep");
+    valid = line.size() + 1;
+  }
+  // The partial CSV is rebuilt from the journal, whose rows carry checksums (an edited or
+  // truncated row went into the final CSV with exit 0 when only "v0,zeta," was checked; a partial
+  // row, like an unchecked journal row, could have been edited or cut short).
+  partial_ = std::fopen(partial.c_str(), "wb");
+  if (!partial_)
+    throw InputError("--out", "cannot write " + partial.string() + ": " + std::strerror(errno));
+  // 1 MiB, not stdio's 4 KiB: a 300 x 300 map's 17 MB are 17 writes, not 4,200
+  partial_buffer_.resize(std::size_t{1} << 20);  // glibc ignores a size without a buffer
+  std::setvbuf(partial_, partial_buffer_.data(), _IOFBF, partial_buffer_.size());
+  if (std::fputs(sweep_csv_header(request.axes).c_str(), partial_) < 0)
+    io_error(partial, std::strerror(errno));
+  // The journal: every finished point as "index checksum row", the checksum FNV-1a of the row
+  // (with its newline). A row whose checksum, index or inputs do not match is not trusted: it
+  // is counted in damaged_rows() and its point computed again.
+  if (journal_in.is_open()) {
+    valid += read_journal_rows(journal_in, request);
+    journal_in.close();
+    fs::resize_file(journal, valid);  // drop a line torn by SIGKILL before appending
+  }
+  journal_ = std::fopen(journal.c_str(), have_journal ? "ab" : "wb");
+  if (!journal_)
+    throw InputError("--out", "cannot write " + journal.string() + ": " + std::strerror(errno));
+  // room for a batch of rows (SweepRunOptions::batch): one write a flush
+  journal_buffer_.resize(std::size_t{1} << 16);
+  std::setvbuf(journal_, journal_buffer_.data(), _IOFBF, journal_buffer_.size());
+  if (!have_journal &&
+      (std::fprintf(journal_, "%s\n", journal_header.c_str()) < 0 || std::fflush(journal_) != 0))
+    io_error(journal, std::strerror(errno));
+  std::lock_guard lock(mutex_);
+  write_ready();
+  cursor_ = next_write_;  // rows read back contiguously from k are written; hand out the rest
+}
+
+std::uintmax_t SweepSink::read_journal_rows(std::istream& in, const SweepRequest& request) {
+  std::uintmax_t whole = 0;  // bytes of whole lines
+  std::string line;
+  while (std::getline(in, line) && !in.eof()) {
+    whole += line.size() + 1;
+    std::optional<std::pair<std::size_t, std::string>> row = parse_journal_line(line, total_);
+    if (!row || row->second.rfind(sweep_csv_inputs(point_inputs(request, row->first)), 0) != 0) {
+      ++damaged_;
+      continue;
+    }
+    if (row->first < next_write_ || pending_.count(row->first)) continue;  // first one wins
+    count(row->second);
+    ++resumed_;
+    pending_.emplace(row->first, std::move(row->second));
+    write_ready();  // streams contiguous rows out: memory stays within the window
+  }
+  return whole;
+}
+
+SweepSink::~SweepSink() {
+  if (partial_) std::fclose(partial_);
+  if (journal_) std::fclose(journal_);
+}
+
+std::size_t SweepSink::done() const {
+  std::lock_guard lock(mutex_);
+  return resumed_ + delivered_;
+}
+
+void SweepSink::count(const std::string& row) {
+  // the three columns in one pass over the row (the fields up to the status column, numbers and
+  // the route and integrator names, hold no commas)
+  const std::array<int, 3> wanted = {sweep_csv_column_index("route", axis_count_),
+                                     sweep_csv_column_index("integrator", axis_count_),
+                                     sweep_csv_column_index("status", axis_count_)};
+  std::array<std::string_view, 3> fields;  // route, integrator, status
+  std::size_t pos = 0;
+  for (int f = 0, got = 0; got < 3 && pos <= row.size(); ++f) {
+    const std::size_t end = std::min(row.find(',', pos), row.size());
+    for (int k = 0; k < 3; ++k)
+      if (wanted[k] == f) {
+        fields[k] = std::string_view(row).substr(pos, end - pos);
+        ++got;
+      }
+    pos = end + 1;
+  }
+  ++counts_.routes[std::string(fields[0])];
+  ++counts_.integrators[std::string(fields[1])];
+  const std::string_view s = fields[2];
+  if (s == to_string(ImpactStatus::separated))
+    ++counts_.separated;
+  else if (s == to_string(ImpactStatus::captured))
+    ++counts_.captured;
+  else
+    ++counts_.failed;
+}
+
+std::size_t SweepSink::written() const {
+  std::lock_guard lock(mutex_);
+  return next_write_;
+}
+
+bool SweepSink::exhausted() const {
+  std::lock_guard lock(mutex_);
+  return stop_ || cursor_ >= total_;
+}
+
+std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
+  std::unique_lock lock(mutex_);
+  std::vector<std::size_t> out;
+  while (out.empty()) {
+    if (stop_ || cursor_ >= total_) return out;
+    if (cursor_ >= next_write_ + options_.window) {
+      if (!block) return out;
+      written_cv_.wait_for(lock, std::chrono::milliseconds(100));  // also polls stop_
+      continue;
+    }
+    while (out.size() < max && cursor_ < total_ && cursor_ < next_write_ + options_.window) {
+      if (!pending_.count(cursor_)) out.push_back(cursor_);  // resumed rows are not rerun
+      ++cursor_;
+    }
+  }
+  return out;
+}
+
+void SweepSink::record(std::size_t index, const std::string& row) {
+  if (index < next_write_ || pending_.count(index)) return;  // delivered before: keep the first
+  // "index checksum row" as printf's "%zu %016llx %s" wrote it, formatted here (once a point)
+  char head[48];
+  char* p = std::to_chars(head, head + 20, index).ptr;
+  *p++ = ' ';
+  const std::uint64_t sum = fnv1a(row);
+  for (int shift = 60; shift >= 0; shift -= 4) *p++ = "0123456789abcdef"[(sum >> shift) & 0xf];
+  *p++ = ' ';
+  if (journal_ && (std::fwrite(head, 1, static_cast<std::size_t>(p - head), journal_) !=
+                       static_cast<std::size_t>(p - head) ||
+                   std::fwrite(row.data(), 1, row.size(), journal_) != row.size()))
+    io_error(journal_path(), std::strerror(errno));
+  count(row);
+  ++delivered_;
+  pending_.emplace(index, row);
+}
+
+void SweepSink::deliver(std::size_t index, const std::string& row) {
+  std::lock_guard lock(mutex_);
+  record(index, row);
+  if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
+  write_ready();
+  if (options_.stream && std::fflush(options_.stream) != 0) stream_failed();
+}
+
+void SweepSink::deliver(const std::vector<std::pair<std::size_t, std::string>>& rows) {
+  std::lock_guard lock(mutex_);
+  for (const auto& [index, row] : rows) record(index, row);
+  if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
+  write_ready();
+  if (options_.stream && std::fflush(options_.stream) != 0) stream_failed();
+}
+
+void SweepSink::write_ready() {
+  bool wrote = false;
+  for (auto it = pending_.begin(); it != pending_.end() && it->first == next_write_;
+       it = pending_.erase(it), ++next_write_) {
+    write_row(it->second);
+    wrote = true;
+  }
+  if (wrote) written_cv_.notify_all();
+}
+
+void SweepSink::write_row(const std::string& row) {
+  if (!options_.stream) {
+    if (std::fputs(row.c_str(), partial_) < 0)
+      io_error(options_.csv.string() + ".partial", std::strerror(errno));
+    return;
+  }
+  if (output_errno_ != 0) return;  // the reader is gone: the rows have nowhere to go
+  if (std::fwrite(row.data(), 1, row.size(), options_.stream) != row.size()) stream_failed();
+}
+
+void SweepSink::stream_failed() {
+  if (output_errno_ == 0) output_errno_ = errno ? errno : EIO;
+  stop_ = true;
+}
+
+bool SweepSink::finish_with_sidecar(
+    const std::function<void(const SweepCounts&, std::ostream&)>& write_sidecar) {
+  return commit_csv([&](StagedFile& csv) {
+    std::optional<StagedFile> sidecar;
+    if (!options_.sidecar.empty())
+      sidecar.emplace(options_.sidecar, [&](std::ostream& out) { write_sidecar(counts_, out); });
+    if (sidecar) fs::remove(sidecar->target());  // from here until its commit: no sidecar
+    csv.commit();
+    if (sidecar) sidecar->commit();
+  });
+}
+
+bool SweepSink::finish(const std::function<void(const SweepCounts&)>& before_commit) {
+  return commit_csv([&](StagedFile& csv) {
+    if (before_commit) before_commit(counts_);
+    csv.commit();
+  });
+}
+
+bool SweepSink::commit_csv(const std::function<void(StagedFile& csv)>& between) {
+  std::lock_guard lock(mutex_);
+  if (options_.stream) {  // nothing to commit: the rows are out
+    if (std::fflush(options_.stream) != 0) stream_failed();
+    return next_write_ == total_ && output_errno_ == 0;
+  }
+  const fs::path partial = options_.csv.string() + ".partial";
+  if (next_write_ < total_) {
+    std::fflush(partial_);
+    std::fflush(journal_);
+    return false;
+  }
+  const int closed = std::fclose(partial_);
+  partial_ = nullptr;
+  if (closed != 0) io_error(partial, std::strerror(errno));
+  // the CSV is copied to its temporary first, so that between `before_commit` (the sidecar)
+  // and the CSV's rename there is one rename, not the copy of the whole file (a SIGKILL during
+  // that copy left a sidecar describing 300,000 points beside an older 2-row CSV)
+  StagedFile csv(options_.csv, [&](std::ostream& out) {
+    std::ifstream in(partial, std::ios::binary);
+    out << in.rdbuf();
+  });
+  between(csv);
+  std::fclose(journal_);
+  journal_ = nullptr;
+  fs::remove(journal_path());  // first: a journal never outlives its partial CSV
+  fs::remove(partial);
+  return true;
+}
+
+}  // namespace ivv
