@@ -15,7 +15,7 @@ class Calibrate final : public Command {
             "calibrate",
             "fit law or scene parameters to measured restitution (Ceres), with standard errors, "
             "95 % intervals, correlations, chi^2 and identifiability; --compare ranks laws")) {
-    add_model_flags(cli(), flags_, false);
+    add_model_flags(cli(), flags_, {});
     add_calibrate_flags(cli(), calibrate_);
   }
 

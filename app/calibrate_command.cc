@@ -349,7 +349,7 @@ int run_predict(const PredictFlags& f) {
     vv = compare_with_data(model, read_measured_data(f.data), o);
     band = vv->prediction;
   } else {
-    const std::vector<double> speeds = parse_grid(f.v0, "--v0", f.log);
+    const std::vector<double> speeds = parse_grid(f.v0, "--v0", spacing_of(f.log));
     for (double v : speeds)
       if (!(std::isfinite(v) && v > 0))
         throw InputError("--v0", "every speed must be a finite number > 0 m/s, got " +

@@ -56,13 +56,13 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
   const SimulationRequest req = to_request(options);
   conformance::Grid grid = conformance::default_grid(req.scene);
   grid.options = req.options;
-  if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0", false);
+  if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0");
   for (double v : grid.velocities)
     if (!(v > 0)) throw InputError("--v0", "velocities must be > 0 m/s");
-  if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta", false);
+  if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta");
   for (double z : grid.zetas)
     if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
-  if (!c.c_grid.empty()) grid.dashpots = parse_grid(c.c_grid, "--c", false);
+  if (!c.c_grid.empty()) grid.dashpots = parse_grid(c.c_grid, "--c");
   for (double d : grid.dashpots)
     if (!(d > 0 && std::isfinite(d)))
       throw InputError("--c", "dashpot coefficients must be finite and > 0 N s/m");
@@ -138,7 +138,7 @@ class CheckLaw final : public Command {
 };
 
 void CheckLaw::add_flags(CLI::App& cmd) {
-  add_model_flags(cmd, flags_, false, false);
+  add_model_flags(cmd, flags_, {.scene_required = false});
   cmd.add_option("--expect-cor", check_.expect_cor,
                  "the COR the law is meant to deliver: an expression in v0, the scene's "
                  "constants and --param names");

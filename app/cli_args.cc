@@ -61,7 +61,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-std::vector<double> parse_grid(const std::string& text, const std::string& field, bool log) {
+std::vector<double> parse_grid(const std::string& text, const std::string& field, Spacing spacing) {
+  const bool log = spacing == Spacing::logarithmic;
   const std::string syntax = "expected LO:HI:N (N >= 1 points) or a comma-separated list";
   if (text.find(':') != std::string::npos) {
     const auto parts = split(text, ':');
@@ -101,7 +102,7 @@ SetAxisSpec parse_set_axis(const std::string& item) {
     if (spec.range.find(':') == std::string::npos)
       throw InputError(field, "'log:' takes a range LO:HI:N, got '" + spec.range + "'");
   }
-  spec.values = parse_grid(spec.range, field, spec.log);
+  spec.values = parse_grid(spec.range, field, spacing_of(spec.log));
   return spec;
 }
 

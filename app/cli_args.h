@@ -16,9 +16,16 @@ double parse_number(const std::string& text, const std::string& field);
 // The whole of `text` as an integer in [lo, hi] (decimal digits, optional sign).
 long parse_count(const std::string& text, const std::string& field, long lo, long hi);
 
-// "LO:HI:N" (n points, inclusive; log spacing when `log`) or a comma-separated list.
-// Throws InputError naming `field` with the accepted syntax.
-std::vector<double> parse_grid(const std::string& text, const std::string& field, bool log);
+// How a range LO:HI:N is spaced (--log, or a `log:` prefix, asks for logarithmic).
+enum class Spacing { linear, logarithmic };
+inline Spacing spacing_of(bool log_flag) {
+  return log_flag ? Spacing::logarithmic : Spacing::linear;
+}
+
+// "LO:HI:N" (n points, inclusive, spaced as `spacing`) or a comma-separated list (taken as
+// given). Throws InputError naming `field` with the accepted syntax.
+std::vector<double> parse_grid(const std::string& text, const std::string& field,
+                               Spacing spacing = Spacing::linear);
 
 // One `--set KEY=RANGE` of `ivv sweep`: a scene value (scene/scene_values.h) varied over RANGE,
 // "LO:HI:N" (linear, decimal: solver/sweep/sweep_grid.h), "log:LO:HI:N" (logarithmic) or "a,b,c".

@@ -16,7 +16,7 @@ class FitHc final : public Command {
       : Command(app.add_subcommand(
             "fit-hc",
             "Hunt-Crossley K and mu reproducing a model's F_max and e (as the paper did)")) {
-    add_model_flags(cli(), flags_, true);
+    add_model_flags(cli(), flags_, {.single_velocity_and_damping = true});
     cli().add_flag("--json", json_, "JSON {K, mu, e, F_max, t_contact_hc, t_contact_model}");
   }
 

@@ -17,13 +17,12 @@ std::optional<double> number(const std::optional<std::string>& text, const std::
 
 }  // namespace
 
-void add_model_flags(CLI::App& cmd, ModelFlags& f, bool with_velocity_and_damping,
-                     bool scene_required) {
+void add_model_flags(CLI::App& cmd, ModelFlags& f, ModelFlagSet set) {
   auto* scene = cmd.add_option(
       "--scene", f.scene,
       "scene file (TOML, docs/design.md §5), 'paper' (Table 1), or a shipped scene's name");
-  if (scene_required) scene->required();
-  if (with_velocity_and_damping) {
+  if (set.scene_required) scene->required();
+  if (set.single_velocity_and_damping) {
     cmd.add_option("--v0", f.v0, "impact velocity [m/s] (overrides the scene)");
     auto* z = cmd.add_option("--zeta", f.zeta, "damping ratio of the series dashpot");
     auto* c = cmd.add_option("--c", f.c, "dashpot coefficient [N s/m]");

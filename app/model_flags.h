@@ -30,10 +30,15 @@ struct ModelFlags {
   bool allow_tension = false;
 };
 
-// `with_velocity_and_damping`: --v0, --zeta, --c and --no-dashpot as single values (sweep and
-// check-law take grids under the same names instead).
-void add_model_flags(CLI::App& cmd, ModelFlags& flags, bool with_velocity_and_damping,
-                     bool scene_required = true);
+// Which of the shared flags a command takes, and how.
+struct ModelFlagSet {
+  // --v0, --zeta, --c, --lambda and --no-dashpot as single values (sweep and check-law take
+  // grids under the same names instead, and calibrate none).
+  bool single_velocity_and_damping = false;
+  bool scene_required = true;
+};
+
+void add_model_flags(CLI::App& cmd, ModelFlags& flags, ModelFlagSet set);
 
 // The typed values as numbers (InputError naming the flag for a malformed one).
 RequestOptions to_options(const ModelFlags& flags);

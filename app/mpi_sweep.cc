@@ -144,7 +144,7 @@ std::string answer_ranks(int ranks, SweepSink& sink, const SweepRunOptions& opti
   int active = ranks;
   std::deque<int> waiting;  // ranks that asked while the reorder window was full
   auto answer = [&](int rank) {
-    const std::vector<std::size_t> work = sink.take(chunk, false);
+    const std::vector<std::size_t> work = sink.take(chunk, SweepSink::WhenAhead::return_empty);
     if (work.empty() && !sink.exhausted()) return false;  // window full: ask again later
     send_work(work, rank);
     return true;

@@ -30,7 +30,7 @@ class Simulate final : public Command {
   explicit Simulate(CLI::App& app)
       : Command(app.add_subcommand("simulate",
                                    "run one impact and print COR, peak force, contact time")) {
-    add_model_flags(cli(), flags_, true);
+    add_model_flags(cli(), flags_, {.single_velocity_and_damping = true});
     cli().add_flag("--json", json_, "print one JSON object on stdout instead of the summary");
     cli().add_option("--trajectory", trajectory_,
                      "write t, alpha, alpha_dot, y, z, F, tau, alpha_bar, F_bar to this CSV");

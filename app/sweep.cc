@@ -62,9 +62,9 @@ ParsedSweep parse_sweep(const ModelFlags& f, const SweepFlags& sf) {
   ParsedSweep p;
   SweepRequest& req = p.request;
   req.base = to_sweep_base(to_options(f));
-  req.velocities = parse_grid(sf.v0_grid, "--v0", sf.log);
+  req.velocities = parse_grid(sf.v0_grid, "--v0", spacing_of(sf.log));
   if (sf.zeta_given)
-    req.zetas = parse_grid(sf.zeta_grid, "--zeta", false);
+    req.zetas = parse_grid(sf.zeta_grid, "--zeta");
   else if (req.base.scene.damping.kind != Damping::Kind::none)
     req.scene_dashpot = true;  // every point keeps the scene's own dashpot (c, lambda, structure)
   else
@@ -218,7 +218,7 @@ class Sweep final : public Command {
             "COR and peak force over a v0 x zeta grid (x any scene values: --set), to CSV (+ a "
             "JSON sidecar) or to standard output; runs across MPI ranks under mpirun")) {
     CLI::App& cmd = cli();
-    add_model_flags(cmd, flags_, false);
+    add_model_flags(cmd, flags_, {});
     cmd.add_option("--v0", sf_.v0_grid, "velocities [m/s]: LO:HI:N or a,b,c")->required();
     cmd.add_flag("--log", sf_.log, "logarithmic spacing of the LO:HI:N velocity grid");
     cmd.add_option("--zeta", sf_.zeta_grid,

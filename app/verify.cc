@@ -48,7 +48,7 @@ class Verify final : public Command {
     }
     if (out_.empty()) throw InputError("--out", "required (the results JSON file)");
     validate_threads(threads_);
-    resolve_output_path(out_, "--out", true);
+    resolve_output_path(out_, "--out", Stdout::allowed);
     const bool tty = isatty(fileno(stderr));
     const BatteryResult battery = run_battery(
         cases, threads_,
@@ -57,7 +57,7 @@ class Verify final : public Command {
       if (!r.outcome.passed) std::cerr << "FAILED " << r.c->id << ": " << r.outcome.detail << "\n";
     const std::string json = reports::results_json(battery.records);
     write_file_atomically(
-        out_, [&](std::ostream& os) { os << json; }, "--out", true);
+        out_, [&](std::ostream& os) { os << json; }, "--out", Stdout::allowed);
     (out_ == "-" ? std::cerr : std::cout)
         << "verify: " << battery.passed() << " passed, " << battery.failed << " failed\n";
     return battery.failed ? kExitFailure : 0;

@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool log = data[0] & 1;
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    const std::vector<double> grid = ivv::parse_grid(text, "--v0", log);
+    const std::vector<double> grid = ivv::parse_grid(text, "--v0", ivv::spacing_of(log));
     expect(!grid.empty(), "a grid has at least one point");
     expect(grid.size() <= 1'000'000, "at most 1e6 points");
     for (double v : grid) expect(std::isfinite(v), "every point finite");

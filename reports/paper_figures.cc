@@ -136,7 +136,7 @@ void response_figures(const verification::PaperResponse& r, int fig, std::vector
   // an undefined linearized law leaves its (empty) series in place: colours stay the same
   // across Figs 2-7
   force.series = {c.nl_force, c.lin_force, c.hc_force};
-  out.push_back({force, force_history_caption(r), false, related});
+  out.push_back({.plot = force, .caption = force_history_caption(r), .source = related});
 
   Plot hyst;
   hyst.id = "paper-fig" + fb + "-force-displacement";
@@ -144,7 +144,7 @@ void response_figures(const verification::PaperResponse& r, int fig, std::vector
   hyst.x_label = "sphere displacement α [mm]";
   hyst.y_label = "impact force F [N]";
   hyst.series = {c.nl_hyst, c.lin_hyst, c.hc_hyst};
-  out.push_back({hyst, force_displacement_caption(r, fa), false, related});
+  out.push_back({.plot = hyst, .caption = force_displacement_caption(r, fa), .source = related});
 }
 
 // Figs 8 and 9: one parameter varied, force history, c held.
@@ -311,7 +311,10 @@ std::vector<Figure> paper_figures(const SectionOptions& options) {
       "drawn) and with v<sub>0</sub> above yield (case "
       "<code>trend.cor-falls-with-v0</code>, on its own grid).";
   if (failed > 0) caption += " " + std::to_string(failed) + " points failed and are not drawn.";
-  out.push_back({p, caption, true, Source::from_cases({"trend.paper.fig14-cor-falls-with-zeta"})});
+  out.push_back({.plot = p,
+                 .caption = caption,
+                 .full_width = true,
+                 .source = Source::from_cases({"trend.paper.fig14-cor-falls-with-zeta"})});
   return out;
 }
 

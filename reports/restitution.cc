@@ -88,9 +88,10 @@ void add_cor_against_zeta(RestitutionSection& out) {
       "not claimed. The linearized law is undefined at 0.1 m/s and for the heavily damped "
       "impacts whose loading stops below 2.25 z<sub>y</sub>: no dashed points there.";
   if (failed > 0) caption += " " + std::to_string(failed) + " runs failed and are not drawn.";
-  out.figures.push_back(
-      {p, caption, false,
-       Source::from_cases({"trend.cor-falls-with-zeta-to-capture", "analytic.linearized.*"})});
+  out.figures.push_back({.plot = p,
+                         .caption = caption,
+                         .source = Source::from_cases(
+                             {"trend.cor-falls-with-zeta-to-capture", "analytic.linearized.*"})});
 }
 
 // Thornton beside the model.

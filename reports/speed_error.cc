@@ -81,7 +81,8 @@ void work_precision_figures(const verification::WorkPrecisionStudy& study, const
       caption += " " + std::to_string(failed) +
                  " points failed or ended in another status than the reference and are not drawn "
                  "(see the table).";
-    out.push_back({p, caption, false, Source::timing({"convergence.work-precision"})});
+    out.push_back(
+        {.plot = p, .caption = caption, .source = Source::timing({"convergence.work-precision"})});
   }
 }
 

@@ -40,11 +40,11 @@ std::string describe(fs::file_type t) {
 
 }  // namespace
 
-fs::path resolve_output_path(const fs::path& path, const std::string& field, bool allow_stdout) {
+fs::path resolve_output_path(const fs::path& path, const std::string& field, Stdout dash) {
   const std::string name = field.empty() ? path.string() : field;
   if (path.empty()) throw InputError(name, "an output path is required (got '')");
   if (path == "-") {
-    if (allow_stdout) return path;
+    if (dash == Stdout::allowed) return path;
     throw InputError(name, "'-' (standard output) is not accepted here; give a file path");
   }
   // What the kernel itself opens (it also follows /proc's magic links, e.g. /dev/stdout to a
@@ -125,7 +125,7 @@ std::string temporary_prefix(const fs::path& target) {
 
 StagedFile::StagedFile(const fs::path& path, const std::function<void(std::ostream&)>& write,
                        const std::string& field)
-    : target_(resolve_output_path(path, field, false)) {
+    : target_(resolve_output_path(path, field, Stdout::refused)) {
   const std::string name = field.empty() ? path.string() : field;
   const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
   std::random_device rd;
@@ -163,8 +163,8 @@ void StagedFile::commit() {
 }
 
 void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write,
-                           const std::string& field, bool allow_stdout) {
-  const fs::path target = resolve_output_path(path, field, allow_stdout);
+                           const std::string& field, Stdout dash) {
+  const fs::path target = resolve_output_path(path, field, dash);
   if (target == "-") {
     write(std::cout);
     std::cout.flush();

@@ -21,12 +21,16 @@
 
 namespace ivv {
 
+// Whether an output path "-" means standard output (a command that can stream its result) or is
+// refused (a command whose output must be a file).
+enum class Stdout { refused, allowed };
+
 // Where the content of `path` will land: the final target of any symbolic links, or "-" for
-// standard output when `allow_stdout`. Throws InputError(field, ...) unless that is a regular
+// standard output when Stdout::allowed. Throws InputError(field, ...) unless that is a regular
 // file or a new path in an existing directory. Call it before a long computation so that a
 // bad output path fails first.
 std::filesystem::path resolve_output_path(const std::filesystem::path& path,
-                                          const std::string& field, bool allow_stdout = false);
+                                          const std::string& field, Stdout dash = Stdout::refused);
 
 // The check of an output directory (a report's DIR), the same for every command: DIR is an
 // existing directory, or a new path whose nearest existing ancestor is a directory this process
@@ -43,7 +47,7 @@ void create_output_directory(const std::filesystem::path& dir, const std::string
 // empty `field` names the path instead.
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write,
-                           const std::string& field = {}, bool allow_stdout = false);
+                           const std::string& field = {}, Stdout dash = Stdout::refused);
 
 // A file written to its temporary (".NAME.tmpPID-N" beside the destination) but not yet in
 // place: files that belong together (a sweep's CSV and its sidecar) are all written first and

@@ -35,9 +35,9 @@ class AtomicFile : public ::testing::Test {
     return ss.str();
   }
   static void write(const fs::path& p, const std::string& text, const std::string& field = "--out",
-                    bool allow_stdout = false) {
+                    Stdout dash = Stdout::refused) {
     write_file_atomically(
-        p, [&](std::ostream& os) { os << text; }, field, allow_stdout);
+        p, [&](std::ostream& os) { os << text; }, field, dash);
   }
   // The InputError's field, or "" when no InputError was thrown.
   static std::string rejected_field(const fs::path& p, const std::string& field = "--out") {
@@ -155,7 +155,7 @@ TEST_F(AtomicFile, DirectoryAndEmptyPathAreRejectedNamingTheFlag) {
 TEST_F(AtomicFile, DashIsStandardOutputOnlyWhereAllowed) {
   EXPECT_EQ(rejected_field("-"), "--out");
   ::testing::internal::CaptureStdout();
-  write("-", "to stdout", "--out", true);
+  write("-", "to stdout", "--out", Stdout::allowed);
   EXPECT_EQ(::testing::internal::GetCapturedStdout(), "to stdout");
   EXPECT_FALSE(fs::exists("-"));
 }

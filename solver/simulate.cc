@@ -248,7 +248,9 @@ ImpactResult simulate(const SimulationRequest& req, std::vector<TrajectoryPoint>
 
 ImpactResult simulate(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
   if (v.request().model == ModelKind::automatic)
-    return run_model(v, decide_model(v, trajectory != nullptr), trajectory);
+    return run_model(
+        v, decide_model(v, trajectory ? RunOutput::result_and_trajectory : RunOutput::result),
+        trajectory);
   return detail::simulate_full(v, effective_integrator(v), trajectory);
 }
 

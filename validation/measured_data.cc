@@ -52,7 +52,12 @@ ColumnRole column_role(const std::string& name, const std::string& where) {
                               "u_t_contact (v0 and e required)");
 }
 
-double parse_cell(const std::string& cell, const std::string& where, bool allow_zero) {
+// Whether a cell may hold 0 (a measured e of 0 is a capture; a speed or an uncertainty of 0 is
+// not a measurement).
+enum class Zero { refused, allowed };
+
+double parse_cell(const std::string& cell, const std::string& where, Zero zero) {
+  const bool allow_zero = zero == Zero::allowed;
   double v = 0.0;
   const char* end = cell.data() + cell.size();
   const auto [ptr, ec] = std::from_chars(cell.data(), end, v);
@@ -103,9 +108,11 @@ Measurement read_row(const std::vector<ColumnRole>& roles, const std::string& li
     const auto qi = static_cast<std::size_t>(r.q);
     const bool required = r.kind == Column::v0 || (r.kind == Column::value && r.q == Quantity::e);
     if (cells[i].empty() && !required) continue;
-    if (r.kind == Column::v0) m.v0 = parse_cell(cells[i], where, false);
-    if (r.kind == Column::value) m.value[qi] = parse_cell(cells[i], where, r.q == Quantity::e);
-    if (r.kind == Column::uncertainty) m.uncertainty[qi] = parse_cell(cells[i], where, false);
+    if (r.kind == Column::v0) m.v0 = parse_cell(cells[i], where, Zero::refused);
+    if (r.kind == Column::value)
+      m.value[qi] = parse_cell(cells[i], where, r.q == Quantity::e ? Zero::allowed : Zero::refused);
+    if (r.kind == Column::uncertainty)
+      m.uncertainty[qi] = parse_cell(cells[i], where, Zero::refused);
   }
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const ColumnRole& r = roles[i];

@@ -29,7 +29,7 @@ std::vector<ModelPoint> run_model_points(const SimulationRequest& base,
   validate(points.front());
   parallel_for(velocities.size(), threads, [&](std::size_t i) {
     const ValidatedRequest v(points[i]);
-    const ModelDecision d = decide_model(v, false);
+    const ModelDecision d = decide_model(v, RunOutput::result);
     out[i].result = run_model(v, d, nullptr);
     out[i].estimated_error = d.estimated_error;
   });

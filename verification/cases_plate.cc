@@ -198,7 +198,8 @@ CrossRun cross_run(const CrossScene& c) {
   r.dt0 = std::min(r.ode.t_contact / 200.0, 0.2 / r.ode.omega_cut);
   for (int k = 0; k < 3; ++k) {
     const double dt = r.dt0 / (1 << k);
-    r.grid[k] = plate_impact_by_convolution(c.scene, c.law, {}, modes, {dt, 1.0, true, k == 2});
+    r.grid[k] =
+        plate_impact_by_convolution(c.scene, c.law, {}, modes, {.dt = dt, .record_force = k == 2});
     if (!r.grid[k].ok) throw std::runtime_error("convolution failed: " + r.grid[k].reason);
   }
   return r;

@@ -473,7 +473,12 @@ Outcome thornton_same_exponent() {
     model.push_back(row.e_simulated);
     thornton.push_back(row.e_thornton);
   }
-  Plot plot{"thornton", "Model COR beside Thornton (1997)", "v0 / v_y", "e", true, true, {}};
+  Plot plot{.id = "thornton",
+            .title = "Model COR beside Thornton (1997)",
+            .x_label = "v0 / v_y",
+            .y_label = "e",
+            .log_x = true,
+            .log_y = true};
   plot.series.push_back({"elastoplastic model (no dashpot)", all, model, Series::Style::lines});
   plot.series.push_back({"Thornton 1997", all, thornton, Series::Style::dashed});
   o.plots.push_back(plot);

@@ -184,13 +184,13 @@ std::string_view to_string(ModelRoute r) {
   return "integrated";
 }
 
-ModelDecision decide_model(const ValidatedRequest& v, bool trajectory_wanted) {
+ModelDecision decide_model(const ValidatedRequest& v, RunOutput output) {
   const SimulationRequest& req = v.request();
   const DerivedParameters& p = v.derived();
   ModelDecision d;
   d.integrator = effective_integrator(v);
   d.estimated_error = integrated_estimate(d.integrator, req.options);
-  if (trajectory_wanted || req.law == LawKind::expression) return d;
+  if (output == RunOutput::result_and_trajectory || req.law == LawKind::expression) return d;
   if (req.law == LawKind::elastoplastic && !p.has_dashpot()) {
     d.route = ModelRoute::closed_form_elastoplastic;
     d.estimated_error = kEstimateClosedForm;
@@ -277,7 +277,8 @@ ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
 
 ModelRun simulate_model(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {
   ModelRun run;
-  const ModelDecision d = decide_model(v, trajectory != nullptr);
+  const ModelDecision d =
+      decide_model(v, trajectory ? RunOutput::result_and_trajectory : RunOutput::result);
   run.result = run_model(v, d, trajectory);
   run.choice = explain(v, d, run.result);
   if (trajectory && v.request().law != LawKind::expression)

@@ -114,7 +114,11 @@ struct ModelRun {
   ModelChoice choice;
 };
 
-ModelDecision decide_model(const ValidatedRequest& request, bool trajectory_wanted);
+// What the caller needs besides the result: a trajectory is only made by integrating, so a
+// request for one rules out the closed forms.
+enum class RunOutput { result, result_and_trajectory };
+
+ModelDecision decide_model(const ValidatedRequest& request, RunOutput output);
 // Runs the decision (route 1-5) for the request.
 ImpactResult run_model(const ValidatedRequest& request, const ModelDecision& decision,
                        std::vector<TrajectoryPoint>* trajectory);

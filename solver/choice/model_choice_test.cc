@@ -53,11 +53,11 @@ TEST(ModelChoice, LinearizedRouteTakenOnlyWhereItsDifferenceAllows) {
   req.model = ModelKind::automatic;
   req.auto_integrator = true;
   req.options.rtol = 1e-2;
-  const ModelDecision loose = decide_model(ValidatedRequest(req), false);
+  const ModelDecision loose = decide_model(ValidatedRequest(req), RunOutput::result);
   EXPECT_EQ(loose.route, ModelRoute::linearized_closed_form);
   EXPECT_LE(loose.estimated_error, req.options.rtol);
   req.options.rtol = req.options.atol = 1e-8;
-  const ModelDecision tight = decide_model(ValidatedRequest(req), false);
+  const ModelDecision tight = decide_model(ValidatedRequest(req), RunOutput::result);
   EXPECT_EQ(tight.route, ModelRoute::integrated);
   EXPECT_LT(tight.linear_difference, 0.0);  // screened before any closed form was evaluated
 }

@@ -88,7 +88,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
       std::vector<std::pair<std::size_t, std::string>> rows;
       for (;;) {
         if (opt.stop && *opt.stop) sink.request_stop();
-        const std::vector<std::size_t> batch = sink.take(opt.batch, true);
+        const std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
         if (batch.empty()) return;  // take() blocks until work is available or none is left
         rows.clear();
         try {

@@ -229,13 +229,13 @@ bool SweepSink::exhausted() const {
   return stop_ || cursor_ >= total_;
 }
 
-std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
+std::vector<std::size_t> SweepSink::take(std::size_t max, WhenAhead when_ahead) {
   std::unique_lock lock(mutex_);
   std::vector<std::size_t> out;
   while (out.empty()) {
     if (stop_ || cursor_ >= total_) return out;
     if (cursor_ >= next_write_ + options_.window) {
-      if (!block) return out;
+      if (when_ahead == WhenAhead::return_empty) return out;
       written_cv_.wait_for(lock, std::chrono::milliseconds(100));  // also polls stop_
       continue;
     }

@@ -79,10 +79,13 @@ class SweepSink {
   void request_stop() { stop_ = true; }
   bool stop_requested() const { return stop_; }
 
-  // Up to `max` indices not yet done, in increasing order. With `block`, waits while the next
-  // index is more than `window` ahead of the first unfinished one; without, returns nothing in
-  // that case. Empty and exhausted(): no work left to hand out (finished or stopping).
-  std::vector<std::size_t> take(std::size_t max, bool block);
+  // What take() does while the next index is more than `window` ahead of the first unfinished
+  // one: wait for the writer to catch up, or return nothing at once (a caller with other work).
+  enum class WhenAhead { wait, return_empty };
+
+  // Up to `max` indices not yet done, in increasing order. Empty and exhausted(): no work left
+  // to hand out (finished or stopping).
+  std::vector<std::size_t> take(std::size_t max, WhenAhead when_ahead);
   bool exhausted() const;
 
   // Records a finished point: appended to the journal (flushed), then written to the partial

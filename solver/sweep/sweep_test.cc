@@ -193,7 +193,8 @@ TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
   SweepSink sink(req, {csv, true, "test"});
   EXPECT_EQ(sink.resumed(), 7u);
   std::vector<std::size_t> computed;
-  for (auto chunk = sink.take(100, true); !chunk.empty(); chunk = sink.take(100, true))
+  for (auto chunk = sink.take(100, SweepSink::WhenAhead::wait); !chunk.empty();
+       chunk = sink.take(100, SweepSink::WhenAhead::wait))
     for (std::size_t i : chunk) {
       computed.push_back(i);
       sink.deliver(i, run_sweep_point(req, i));
@@ -247,7 +248,8 @@ TEST(SweepSink, DamagedJournalRowIsRecomputedNotTrusted) {
   EXPECT_EQ(sink.damaged_rows(), 3u);
   EXPECT_EQ(sink.resumed(), 7u);
   std::vector<std::size_t> computed;
-  for (auto chunk = sink.take(100, true); !chunk.empty(); chunk = sink.take(100, true))
+  for (auto chunk = sink.take(100, SweepSink::WhenAhead::wait); !chunk.empty();
+       chunk = sink.take(100, SweepSink::WhenAhead::wait))
     for (std::size_t i : chunk) {
       computed.push_back(i);
       sink.deliver(i, run_sweep_point(req, i));
@@ -294,11 +296,13 @@ TEST(SweepSink, WindowBoundsHowFarAheadWorkIsHandedOut) {
   SweepOutputOptions opt{scratch("window.csv"), false, "test"};
   opt.window = 4;
   SweepSink sink(req, opt);
-  EXPECT_EQ(sink.take(100, false), (std::vector<std::size_t>{0, 1, 2, 3}));
-  EXPECT_TRUE(sink.take(100, false).empty());  // point 0 unfinished: nothing further
+  EXPECT_EQ(sink.take(100, SweepSink::WhenAhead::return_empty),
+            (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_TRUE(sink.take(100, SweepSink::WhenAhead::return_empty)
+                  .empty());  // point 0 unfinished: nothing further
   EXPECT_FALSE(sink.exhausted());
   sink.deliver(0, run_sweep_point(req, 0));
-  EXPECT_EQ(sink.take(100, false), (std::vector<std::size_t>{4}));
+  EXPECT_EQ(sink.take(100, SweepSink::WhenAhead::return_empty), (std::vector<std::size_t>{4}));
 }
 
 // Under --model auto and --integrator auto what runs differs from point to point; each row
