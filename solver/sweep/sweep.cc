@@ -94,15 +94,16 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         try {
           for (const std::size_t i : batch) rows.emplace_back(i, run_sweep_point(req, i));
         } catch (...) {
-          sink.request_stop();  // the other workers take no more: the sweep ends with this
-          sink.deliver(rows);   // the points done before it stay in the journal
+          sink.request_stop();            // the other workers take no more: the sweep ends
+          sink.deliver(std::move(rows));  // the points done before it stay in the journal
           throw;
         }
-        sink.deliver(rows);
+        const std::size_t delivered = rows.size();
+        sink.deliver(std::move(rows));
         if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);
           const std::size_t done = sink.done();
-          for (std::size_t k = 0; k < rows.size(); ++k) opt.progress(done, sink.total());
+          for (std::size_t k = 0; k < delivered; ++k) opt.progress(done, sink.total());
         }
       }
     });

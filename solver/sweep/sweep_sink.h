@@ -11,6 +11,7 @@
 // resume). A reader that stops reading (`| head`) ends the sweep quietly: output_closed().
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -24,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/result.h"
 #include "solver/sweep/sweep_grid.h"
 
 namespace ivv {
@@ -88,8 +90,9 @@ class SweepSink {
   // Records a finished point: appended to the journal (flushed), then written to the partial
   // CSV once every earlier point is written.
   void deliver(std::size_t index, const std::string& row);
-  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal.
-  void deliver(const std::vector<std::pair<std::size_t, std::string>>& rows);
+  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal. The
+  // rows are moved into the sink.
+  void deliver(std::vector<std::pair<std::size_t, std::string>> rows);
 
   // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
@@ -114,9 +117,25 @@ class SweepSink {
   // for --resume and returns false; otherwise stages the CSV (a copy of the partial), calls
   // `between`, which commits it (and a sidecar around it), then removes journal and partial.
   bool commit_csv(const std::function<void(StagedFile& csv)>& between);
-  void write_ready();                                      // caller holds mutex_
-  void record(std::size_t index, const std::string& row);  // caller holds mutex_
-  void count(const std::string& row);
+  // What the counts take from a row: where its route and integrator are, and its status.
+  struct RowFacts {
+    std::size_t route = 0, route_size = 0, integrator = 0, integrator_size = 0;
+    ImpactStatus status = ImpactStatus::failed;
+  };
+  // A finished row with its journal line's head ("index checksum ") and its facts, made before
+  // the lock is taken.
+  struct PreparedRow {
+    std::size_t index = 0;
+    std::string row;
+    std::array<char, 48> head{};
+    std::size_t head_size = 0;
+    RowFacts facts;
+  };
+  RowFacts facts(const std::string& row) const;
+  PreparedRow prepare(std::size_t index, std::string row) const;
+  void write_ready();                                         // caller holds mutex_
+  void record(PreparedRow&& row);                             // caller holds mutex_
+  void count(const std::string& row, const RowFacts& facts);  // caller holds mutex_
   // Reads the journal's rows after its header into pending_ (and the partial CSV); returns the
   // bytes of its whole lines.
   std::uintmax_t read_journal_rows(std::istream& in, const SweepRequest& request);
@@ -128,7 +147,8 @@ class SweepSink {
   std::size_t total_ = 0;
   std::size_t resumed_ = 0;
   std::size_t damaged_ = 0;
-  std::size_t axis_count_ = 0;  // scene axes: the CSV's result columns come after them
+  std::size_t axis_count_ = 0;          // scene axes: the CSV's result columns come after them
+  std::array<int, 3> count_columns_{};  // the route, integrator and status columns' indices
   std::atomic<int> output_errno_{0};
   std::atomic<bool> stop_{false};
   mutable std::mutex mutex_;
