@@ -365,13 +365,12 @@ bool SweepSink::commit_csv(const std::function<void(StagedFile& csv)>& between) 
   const int closed = std::fclose(partial_);
   partial_ = nullptr;
   if (closed != 0) io_error(partial, std::strerror(errno));
-  // the CSV is copied to its temporary first, so that between `before_commit` (the sidecar)
+  // the partial becomes the CSV's temporary first, so that between `before_commit` (the sidecar)
   // and the CSV's rename there is one rename, not the copy of the whole file (a SIGKILL during
-  // that copy left a sidecar describing 300,000 points beside an older 2-row CSV)
-  StagedFile csv(options_.csv, [&](std::ostream& out) {
-    std::ifstream in(partial, std::ios::binary);
-    out << in.rdbuf();
-  });
+  // that copy left a sidecar describing 300,000 points beside an older 2-row CSV). Renamed, not
+  // copied: the copy of the 300 x 300 map's 20 MB was the last serial step of every sweep; a
+  // SIGKILL after the rename leaves the journal, from which --resume rebuilds the partial.
+  StagedFile csv(options_.csv, StagedFile::FromFile{partial});
   between(csv);
   std::fclose(journal_);
   journal_ = nullptr;
