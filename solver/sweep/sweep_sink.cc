@@ -241,6 +241,11 @@ bool SweepSink::exhausted() const {
 
 std::vector<std::size_t> SweepSink::take(std::size_t max, bool block) {
   std::unique_lock lock(mutex_);
+  return take_locked(lock, max, block);
+}
+
+std::vector<std::size_t> SweepSink::take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
+                                                bool block) {
   std::vector<std::size_t> out;
   while (out.empty()) {
     if (stop_ || cursor_ >= total_) return out;
@@ -292,6 +297,21 @@ void SweepSink::deliver(std::size_t index, const std::string& row) {
 }
 
 void SweepSink::deliver(std::vector<std::pair<std::size_t, std::string>> rows) {
+  std::vector<PreparedRow> prepared = prepare(std::move(rows));
+  std::lock_guard lock(mutex_);
+  record_batch(prepared);
+}
+
+std::vector<std::size_t> SweepSink::deliver_and_take(
+    std::vector<std::pair<std::size_t, std::string>> rows, std::size_t max) {
+  std::vector<PreparedRow> prepared = prepare(std::move(rows));
+  std::unique_lock lock(mutex_);
+  record_batch(prepared);
+  return take_locked(lock, max, true);
+}
+
+std::vector<SweepSink::PreparedRow> SweepSink::prepare(
+    std::vector<std::pair<std::size_t, std::string>> rows) const {
   // the checksums and the parse of each row before the lock: two workers that finish a batch
   // together wait for each other only for the copies into the journal and the CSV (with them
   // inside, two threads on the 300 x 300 map met at the lock on nearly every batch: 6,600
@@ -299,7 +319,10 @@ void SweepSink::deliver(std::vector<std::pair<std::size_t, std::string>> rows) {
   std::vector<PreparedRow> prepared;
   prepared.reserve(rows.size());
   for (auto& [index, row] : rows) prepared.push_back(prepare(index, std::move(row)));
-  std::lock_guard lock(mutex_);
+  return prepared;
+}
+
+void SweepSink::record_batch(std::vector<PreparedRow>& prepared) {
   for (PreparedRow& p : prepared) record(std::move(p));
   if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
   write_ready();

@@ -93,6 +93,10 @@ class SweepSink {
   // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal. The
   // rows are moved into the sink.
   void deliver(std::vector<std::pair<std::size_t, std::string>> rows);
+  // deliver(rows), then take(max, true) in the same hold of the lock: one lock a batch for a
+  // worker that goes on (two, delivering and taking apart, met more often at the lock).
+  std::vector<std::size_t> deliver_and_take(std::vector<std::pair<std::size_t, std::string>> rows,
+                                            std::size_t max);
 
   // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
@@ -133,6 +137,10 @@ class SweepSink {
   };
   RowFacts facts(const std::string& row) const;
   PreparedRow prepare(std::size_t index, std::string row) const;
+  std::vector<PreparedRow> prepare(std::vector<std::pair<std::size_t, std::string>> rows) const;
+  void record_batch(std::vector<PreparedRow>& rows);  // caller holds mutex_; flushes
+  std::vector<std::size_t> take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
+                                       bool block);
   void write_ready();                                         // caller holds mutex_
   void record(PreparedRow&& row);                             // caller holds mutex_
   void count(const std::string& row, const RowFacts& facts);  // caller holds mutex_
