@@ -1,5 +1,6 @@
 // ivv bench: speed against error with its peers and targets (bench/speed_bench.h), or with
 // --gbench [--benchmark_*] the Google Benchmark timings (bench/benchmarks.h).
+#include <filesystem>
 #include <iostream>
 
 #include "app/command.h"
@@ -41,8 +42,12 @@ class Bench final : public Command {
         throw InputError(e,
                          "unknown flag; ivv bench takes --json, --quick, or --gbench "
                          "[--benchmark_*]");
+    // this executable, for callgrind's instruction counts (a child ivv sweep)
+    std::error_code ec;
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
     const bench::BenchReport rep =
-        bench::run_bench({quick}, [](const std::string& line) { std::cerr << line << "\n"; });
+        bench::run_bench({.quick = quick, .ivv_executable = self},
+                         [](const std::string& line) { std::cerr << line << "\n"; });
     std::cout << (json ? bench::to_json(rep) + "\n" : bench::to_text(rep));
     return 0;
   }

@@ -16,6 +16,7 @@
 
 #include <unistd.h>  // getpid: the map's scratch CSV
 
+#include "bench/arithmetic_limit.h"
 #include "closed_forms/linear_model.h"
 #include "solver/format.h"
 #include "solver/plate/plate_impact.h"
@@ -82,25 +83,60 @@ SpeedPoint measure(const SimulationRequest& req, const std::string& scene,
   return pt;
 }
 
-double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, const std::string& law,
-               double level, bool use_F, std::string* who = nullptr) {
-  double best = kNaN;
+// The fastest point of `scene` and `law` within `level` (of err_e, or of max(err_e, err_F)
+// with use_F); nullptr when none reached it.
+const SpeedPoint* best_point(const std::vector<SpeedPoint>& pts, const std::string& scene,
+                             const std::string& law, double level, bool use_F) {
+  const SpeedPoint* best = nullptr;
   for (const SpeedPoint& p : pts) {
     if (!p.ok || p.scene != scene || p.law != law) continue;
     const double err = use_F ? std::max(p.err_e, p.err_F) : p.err_e;
     if (!(err <= level)) continue;
-    if (std::isnan(best) || p.us_per_impact < best) {
-      best = p.us_per_impact;
-      if (who) *who = p.integrator;
-    }
+    if (!best || p.us_per_impact < best->us_per_impact) best = &p;
   }
   return best;
 }
 
+double best_us(const std::vector<SpeedPoint>& pts, const std::string& scene, const std::string& law,
+               double level, bool use_F, std::string* who = nullptr) {
+  const SpeedPoint* best = best_point(pts, scene, law, level, use_F);
+  if (best && who) *who = best->integrator;
+  return best ? best->us_per_impact : kNaN;
+}
+
+// The cost of one right-hand-side evaluation, and the ivv executable, for the arithmetic limit
+// and the instruction counts of the per-impact and map targets (bench/arithmetic_limit.h).
+struct LimitInputs {
+  double rhs_ns = kNaN;
+  std::string ivv;  // empty: no instruction counts
+};
+
+// The limit of a time made of `rhs_evals` evaluations, in the target's unit (unit_per_us: 1 for
+// us, 1e-6 for s).
+void set_limit(BenchTarget& t, double rhs_evals, double rhs_ns, double unit_per_us,
+               const std::string& what) {
+  t.limit = rhs_evals * rhs_ns * 1e-3 * unit_per_us;
+  std::ostringstream os;
+  os << what << ": " << rhs_evals << " RHS evaluations x " << std::setprecision(3) << rhs_ns
+     << " ns (one evaluation, measured: bench/arithmetic_limit.h)";
+  t.limit_how = os.str();
+}
+
+void set_instructions(BenchTarget& t, const InstructionCount& count) {
+  t.instructions = count.per_impact;
+  t.instructions_how = count.how;
+}
+
 BenchTarget target(std::string name, double bound, std::string unit, double measured,
                    std::string how, std::string group) {
-  BenchTarget t{std::move(group), std::move(name), bound, std::move(unit),
-                measured,         false,           kNaN,  std::move(how)};
+  BenchTarget t;
+  t.group = std::move(group);
+  t.name = std::move(name);
+  t.bound = bound;
+  t.unit = std::move(unit);
+  t.measured = measured;
+  t.ratio = kNaN;
+  t.how = std::move(how);
   if (!std::isnan(measured)) {
     t.ratio = measured / bound;
     t.met = measured <= bound;
@@ -260,7 +296,26 @@ double time_map_with_csv(const SweepRequest& sweep, int threads, int* failed) {
 // The large map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
 // --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
 // scaled to 90000 points.
-void add_map_targets(BenchReport& rep, bool quick) {
+// The map's limit: its RHS evaluations (one run in memory) x the cost of one [s]; and its
+// instructions per point, whole process, on the 60 x 30 subgrid.
+void describe_map(BenchTarget& t, const SweepRequest& sweep, double scale, const LimitInputs& in) {
+  SweepRequest r = sweep;
+  r.threads = 1;
+  double evals = 0.0;
+  for (const SweepPoint& p : run_sweep(r)) evals += static_cast<double>(p.result.rhs_evaluations);
+  set_limit(t, evals * scale, in.rhs_ns, 1e-6, "every point of the map (closed-form points none)");
+  if (in.ivv.empty()) return;
+  const std::string common =
+      " --scene paper --law elastoplastic --model auto --integrator auto --rtol 1e-8 --atol 1e-8 "
+      "--out -";
+  set_instructions(t, count_instructions({.ivv = in.ivv,
+                                          .args = "--v0 0.1:10:60 --log --zeta 0:1:30" + common,
+                                          .points = 60 * 30,
+                                          .single = "--v0 1 --zeta 0.1" + common,
+                                          .simulate_only = false}));
+}
+
+void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
   const int nv = quick ? 60 : 300, nz = quick ? 30 : 300;
   SweepRequest sweep;
   sweep.base.scene = paper_scene();
@@ -282,6 +337,7 @@ void add_map_targets(BenchReport& rep, bool quick) {
                  std::to_string(failed_one) + " failed points (a failed point counts as a miss)",
              "map"));
   if (failed_one > 0) rep.targets.back().met = false;
+  describe_map(rep.targets.back(), sweep, scale, limits);
   rep.targets.push_back(target(
       "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
       grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
@@ -415,7 +471,27 @@ void measure_stiff_scene(const Timing& timing, const std::vector<double>& rtols,
 }
 
 // The per-impact targets on the paper and stiff scenes, from the measured points.
-void add_paper_targets(const Timing& timing, BenchReport& rep) {
+// The limit and the instruction count of a per-impact target reached by `best` (the paper scene,
+// elastoplastic).
+void describe_paper_point(BenchTarget& t, const SpeedPoint* best, const LimitInputs& in) {
+  if (!best) return;
+  set_limit(t, static_cast<double>(best->rhs_evals), in.rhs_ns, 1.0,
+            best->integrator + " at rtol " + fmt(best->rtol));
+  if (in.ivv.empty()) return;
+  constexpr int kPoints = 100;
+  const std::string rtol = fmt(best->rtol, 17);
+  set_instructions(
+      t, count_instructions({.ivv = in.ivv,
+                             .args = "--scene paper --v0 1:1:" + std::to_string(kPoints) +
+                                     " --zeta 0.1 --law elastoplastic --model full --integrator " +
+                                     best->integrator + " --rtol " + rtol + " --atol " + rtol +
+                                     " --out -",
+                             .points = kPoints,
+                             .single = {},
+                             .simulate_only = true}));
+}
+
+void add_paper_targets(const Timing& timing, const LimitInputs& limits, BenchReport& rep) {
   const std::string paper = scene_label(1.0, 0.1);
   std::string who8, who12, whos;
   const double t8 = best_us(rep.points, paper, "elastoplastic", 1e-8, false, &who8);
@@ -424,8 +500,12 @@ void add_paper_targets(const Timing& timing, BenchReport& rep) {
       "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
       "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
       "per-impact"));
+  describe_paper_point(rep.targets.back(),
+                       best_point(rep.points, paper, "elastoplastic", 1e-8, false), limits);
   rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
                                "fastest point with err_e <= 1e-12 (" + who12 + ")", "per-impact"));
+  describe_paper_point(rep.targets.back(),
+                       best_point(rep.points, paper, "elastoplastic", 1e-12, false), limits);
   {
     const Scene s = paper_at(1.0, 0.1);
     const DerivedParameters p = derive(s);
@@ -531,12 +611,14 @@ BenchReport run_bench(const BenchOptions& options,
   say("bench: peers (GSL, odeint, SUNDIALS CVODE and ARKODE) on the paper scene");
   rep.peers = measure_peers(rtols, paper_reference, timing.min_seconds, timing.min_repeats);
 
-  say("bench: targets");
-  add_paper_targets(timing, rep);
+  say("bench: targets (with the cost of one RHS evaluation and callgrind's instruction counts)");
+  const LimitInputs limits{rhs_nanoseconds(timing.min_seconds, timing.min_repeats),
+                           options.ivv_executable};
+  add_paper_targets(timing, limits, rep);
   add_cor_map_targets(options, rep);
   say("bench: the speed targets (peer ratios, the 300 x 300 map with its CSV, auto integrator)");
   add_peer_ratio_targets(rep);
-  add_map_targets(rep, options.quick);
+  add_map_targets(rep, options.quick, limits);
   add_auto_integrator_target(rep, options.quick, timing);
   calibration_targets(options, rep, progress);
   say("bench: the finite plate (work against error over the mode count)");
@@ -597,7 +679,11 @@ std::string to_json(const BenchReport& r) {
                                        : t.met                ? "pass"
                                                               : "miss"},
                             {"ratio", num(t.ratio)},
-                            {"how", t.how}});
+                            {"how", t.how},
+                            {"instructions_per_impact", num(t.instructions)},
+                            {"instructions_how", t.instructions_how},
+                            {"limit", num(t.limit)},
+                            {"limit_how", t.limit_how}});
   j["ratio_table"] = nlohmann::json::array();
   for (const auto& row : ratio_table(r.points, r.peers)) {
     nlohmann::json pj = nlohmann::json::object();
@@ -647,6 +733,17 @@ std::string to_text(const BenchReport& r) {
        << ", measured " << std::setprecision(3) << t.measured << " " << t.unit;
     if (!std::isnan(t.ratio)) os << " (x" << t.ratio << " of the target)";
     os << "\n        " << t.how << "\n";
+    if (!t.limit_how.empty())
+      os << "        limit " << std::setprecision(3) << t.limit << " " << t.unit
+         << " (measured / limit = x" << t.measured / t.limit << "): " << t.limit_how << "\n";
+    if (!t.instructions_how.empty()) {
+      os << "        instructions per impact ";
+      if (std::isnan(t.instructions))
+        os << "n/a";
+      else
+        os << std::fixed << std::setprecision(0) << t.instructions << std::defaultfloat;
+      os << " (" << t.instructions_how << ")\n";
+    }
   }
   os << "\n"
      << r.points.size() << " points, " << r.peers.size() << " peer points in "

@@ -30,10 +30,15 @@
 // (--quick: 60 x 30, scaled); --integrator auto against the fastest fixed integrator on every point
 // of a grid with the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
 //
+// Beside each per-impact target and the large map: the arithmetic limit (the RHS evaluations the
+// run needed x the measured cost of one) and the instructions per impact counted by callgrind in
+// a child `ivv sweep` (bench/arithmetic_limit.h), so the distance to the limit is a number.
+//
 // Timings are never pass/fail; quote ratios measured in one run, with `machine`.
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -59,10 +64,19 @@ struct BenchTarget {
   bool met = false;
   double ratio = 0.0;  // measured / bound (> 1: missed by this factor)
   std::string how;     // what was measured, and why a miss happens if it does
+  // The arithmetic limit (bench/arithmetic_limit.h), for the per-impact and map targets; NaN
+  // where not stated:
+  double instructions = std::numeric_limits<double>::quiet_NaN();  // per impact, counted
+  std::string instructions_how;  // the command that counted them, or why they were not
+  double limit = std::numeric_limits<double>::quiet_NaN();  // RHS evaluations x one's cost [unit]
+  std::string limit_how;                                    // the evaluations and the cost of one
 };
 
 struct BenchOptions {
   bool quick = false;
+  // The ivv executable, for the instruction counts (callgrind runs it as a child); empty: not
+  // counted.
+  std::string ivv_executable = {};
 };
 
 // One point of the --integrator auto grid: auto's time against the fastest fixed

@@ -123,17 +123,46 @@ std::string temporary_prefix(const fs::path& target) {
 }
 }  // namespace
 
-StagedFile::StagedFile(const fs::path& path, const std::function<void(std::ostream&)>& write,
-                       const std::string& field)
-    : target_(resolve_output_path(path, field, Stdout::refused)) {
-  const std::string name = field.empty() ? path.string() : field;
-  const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
+namespace {
+// ".NAME.tmpPID-N" beside the resolved destination
+fs::path temporary_for(const fs::path& target) {
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::random_device rd;
-  std::string tmp_name = temporary_prefix(target_);
+  std::string tmp_name = temporary_prefix(target);
   tmp_name += std::to_string(getpid());
   tmp_name += "-";
   tmp_name += std::to_string(rd());
-  tmp_ = dir / tmp_name;
+  return dir / tmp_name;
+}
+}  // namespace
+
+StagedFile::StagedFile(const fs::path& path, const FromFile& from, const std::string& field)
+    : target_(resolve_output_path(path, field, Stdout::refused)), tmp_(temporary_for(target_)) {
+  std::error_code ec;
+  fs::rename(from.source, tmp_, ec);
+  if (!ec) return;
+  // not on the destination's file system: copied instead
+  try {
+    std::ifstream in(from.source, std::ios::binary);
+    std::ofstream out(tmp_, std::ios::binary | std::ios::trunc);
+    if (!in || !out)
+      throw InputError(field.empty() ? path.string() : field,
+                       "cannot stage " + from.source.string() + " as " + tmp_.string());
+    out << in.rdbuf();
+    out.flush();
+    if (!out) throw std::runtime_error("write to '" + tmp_.string() + "' failed");
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp_, ignored);
+    throw;
+  }
+}
+
+StagedFile::StagedFile(const fs::path& path, const std::function<void(std::ostream&)>& write,
+                       const std::string& field)
+    : target_(resolve_output_path(path, field, Stdout::refused)), tmp_(temporary_for(target_)) {
+  const std::string name = field.empty() ? path.string() : field;
+  const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
   try {
     std::ofstream out(tmp_, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(name, "cannot create a file in '" + dir.string() + "'");

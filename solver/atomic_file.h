@@ -58,6 +58,13 @@ class StagedFile {
  public:
   StagedFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
              const std::string& field = {});
+  // A file written already: `source` becomes the temporary by a rename (no copy; the source is
+  // gone), or is copied to it where the rename fails (another file system).
+  struct FromFile {
+    std::filesystem::path source;
+  };
+  StagedFile(const std::filesystem::path& path, const FromFile& from,
+             const std::string& field = {});
   ~StagedFile();
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;

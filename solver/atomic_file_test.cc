@@ -144,6 +144,23 @@ TEST_F(AtomicFile, StagedFileAppearsOnlyOnCommit) {
   EXPECT_EQ(slurp(dir_ / "a.json"), "{}");
 }
 
+// A file written already (a sweep's partial CSV) is staged by a rename: the source is gone at
+// once, the destination appears only on commit, and an uncommitted stage leaves nothing.
+TEST_F(AtomicFile, StagedFromAFileTakesTheFileAndAppearsOnlyOnCommit) {
+  std::ofstream(dir_ / "a.csv.partial") << "v0,e\n1,0.5\n";
+  {
+    StagedFile staged(dir_ / "a.csv", StagedFile::FromFile{dir_ / "a.csv.partial"});
+    EXPECT_FALSE(fs::exists(dir_ / "a.csv.partial"));
+    EXPECT_FALSE(fs::exists(dir_ / "a.csv"));
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
+  std::ofstream(dir_ / "a.csv.partial") << "v0,e\n1,0.5\n";
+  StagedFile staged(dir_ / "a.csv", StagedFile::FromFile{dir_ / "a.csv.partial"});
+  staged.commit();
+  EXPECT_EQ(slurp(dir_ / "a.csv"), "v0,e\n1,0.5\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
 TEST_F(AtomicFile, DirectoryAndEmptyPathAreRejectedNamingTheFlag) {
   EXPECT_EQ(rejected_field(dir_), "--out");
   EXPECT_EQ(rejected_field(dir_ / "."), "--out");

@@ -10,6 +10,7 @@
 #include "solver/driver/impact_system.h"
 #include "solver/laws/elastoplastic.h"
 #include "solver/laws/hunt_crossley.h"
+#include "solver/steppers/dop853.h"
 
 namespace ivv {
 namespace {
@@ -118,6 +119,68 @@ TEST(ImpactEvents, RootsReadOnlyTheComponentsTheLocatorInterpolates) {
   ImpactSystem<HuntCrossleyLaw, false> hc;
   hc.law = {1.0, 0.2};
   expect_roots_read_only_event_components(hc, {0.2, -0.3, 0.05, 0.04});
+}
+
+// dop853 forms only System::rhs_components of a stage's argument (dop853.h): the right-hand side
+// must give the same derivatives, bit for bit, when every other component is NaN.
+template <class System>
+void expect_rhs_reads_only_rhs_components(System sys, typename System::state_type x) {
+  typename System::state_type only = x;
+  for (std::size_t i = 0; i < only.size(); ++i)
+    if (std::find(System::rhs_components.begin(), System::rhs_components.end(), i) ==
+        System::rhs_components.end())
+      only[i] = std::nan("");
+  for (bool unloading : {false, true}) {
+    if (unloading) law_begin_unloading(sys.law, sys.branch, 0.3);
+    typename System::state_type f{}, f_only{};
+    sys(x, f, 0.0);
+    sys(only, f_only, 0.0);
+    for (std::size_t i = 0; i < f.size(); ++i)
+      EXPECT_EQ(f_only[i], f[i]) << "component " << i << (unloading ? ", unloading" : "");
+  }
+}
+
+TEST(ImpactSystem, RightHandSideReadsOnlyItsListedComponents) {
+  expect_rhs_reads_only_rhs_components(plastic_system(), {0.1, 0.9, 0.2, 0.05, 0.04, 0.01});
+  ImpactSystem<ElastoplasticLaw, false> undamped;
+  undamped.law = plastic_system().law;
+  expect_rhs_reads_only_rhs_components(undamped, {0.2, 0.7, 0.05, 0.04});
+  ImpactSystem<HuntCrossleyLaw, false> hc;
+  hc.law = {1.0, 0.2};
+  expect_rhs_reads_only_rhs_components(hc, {0.2, -0.3, 0.05, 0.04});
+}
+
+// The same system without rhs_components: dop853 forms every component of a stage's argument.
+struct EveryComponent {
+  using value_type = double;
+  using state_type = Plastic::state_type;
+  Plastic sys = plastic_system();
+  void operator()(const state_type& x, state_type& f, double t) const { sys(x, f, t); }
+};
+
+TEST(Dop853, StagesOfTheReadComponentsOnlyGiveTheSameStepsBitForBit) {
+  IntegratorOptions opt;
+  opt.rtol = opt.atol = 1e-8;
+  Dop853Stepper<Plastic> reduced(opt);
+  Dop853Stepper<EveryComponent> full(opt);
+  const Plastic sys = plastic_system();
+  const EveryComponent every;
+  const Plastic::state_type x0 = {0.01, 0.99, 0.01, 0.0, 0.0, 0.0};
+  reduced.start(sys, 0.01, x0);
+  full.start(every, 0.01, x0);
+  for (int k = 0; k < 20; ++k) {  // on the loading branch
+    ASSERT_TRUE(reduced.step(sys).ok);
+    ASSERT_TRUE(full.step(every).ok);
+    EXPECT_EQ(reduced.t1(), full.t1()) << "step " << k;
+    for (std::size_t i = 0; i < x0.size(); ++i)
+      EXPECT_EQ(reduced.x1()[i], full.x1()[i]) << "step " << k << ", component " << i;
+    Plastic::state_type a{}, b{};
+    const double t = 0.5 * (reduced.t0() + reduced.t1());
+    reduced.interpolate(sys, t, a);
+    full.interpolate(every, t, b);
+    for (std::size_t i = 0; i < x0.size(); ++i)
+      EXPECT_EQ(a[i], b[i]) << "dense output, step " << k << ", component " << i;
+  }
 }
 
 }  // namespace

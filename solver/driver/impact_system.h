@@ -52,6 +52,10 @@ struct ImpactSystem {
   // The components every event root reads (impact_events.h: z, w and the force of z and w):
   // the event locator interpolates only these.
   static constexpr std::array<std::size_t, 2> event_components = {Dashpot ? Z : A, W};
+  // The components operator() reads: the force's z and w (and dxdt[A] = w). The rest are
+  // quadratures and the displacement, which feed nothing back: a stepper forms only these of a
+  // stage's argument (dop853.h), the same arithmetic on the components that matter.
+  static constexpr std::array<std::size_t, 2> rhs_components = {Dashpot ? Z : A, W};
 
   Law law;
   history_type branch;

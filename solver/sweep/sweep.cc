@@ -76,33 +76,39 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
 }
 
 void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOptions& opt) {
-  // Each worker takes a batch of points, computes it and delivers it in one call: one lock of
-  // the sink and one journal flush a batch. Delivering point by point (a chunk of 256 per
-  // parallel_for, three locks a point) made two threads contend: 13,849 context switches and
-  // 21 % more CPU time than one thread on the 300 x 300 map (perf stat).
+  // Each worker takes a batch of points, computes it, and delivers it and takes the next in one
+  // call (deliver_and_take): one lock of the sink and one journal flush a batch. Delivering point
+  // by point (a chunk of 256 per parallel_for, three locks a point) made two threads contend:
+  // 13,849 context switches and 21 % more CPU time than one thread on the 300 x 300 map (perf
+  // stat).
   std::mutex progress_mutex;
   ParallelOptions po;
   po.threads = worker_count(sink.total(), req.threads);
   try {
     parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t) {
       std::vector<std::pair<std::size_t, std::string>> rows;
+      std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
       for (;;) {
-        if (opt.stop && *opt.stop) sink.request_stop();
-        const std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
-        if (batch.empty()) return;  // take() blocks until work is available or none is left
+        if (opt.stop && *opt.stop) {  // a batch taken but not run is left for --resume
+          sink.request_stop();
+          return;
+        }
+        // take() and deliver_and_take() block until work is available or none is left
+        if (batch.empty()) return;
         rows.clear();
         try {
           for (const std::size_t i : batch) rows.emplace_back(i, run_sweep_point(req, i));
         } catch (...) {
-          sink.request_stop();  // the other workers take no more: the sweep ends with this
-          sink.deliver(rows);   // the points done before it stay in the journal
+          sink.request_stop();            // the other workers take no more: the sweep ends
+          sink.deliver(std::move(rows));  // the points done before it stay in the journal
           throw;
         }
-        sink.deliver(rows);
+        const std::size_t delivered = rows.size();
+        batch = sink.deliver_and_take(std::move(rows), opt.batch);
         if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);
           const std::size_t done = sink.done();
-          for (std::size_t k = 0; k < rows.size(); ++k) opt.progress(done, sink.total());
+          for (std::size_t k = 0; k < delivered; ++k) opt.progress(done, sink.total());
         }
       }
     });

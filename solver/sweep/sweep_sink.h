@@ -11,6 +11,7 @@
 // resume). A reader that stops reading (`| head`) ends the sweep quietly: output_closed().
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -24,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/result.h"
 #include "solver/sweep/sweep_grid.h"
 
 namespace ivv {
@@ -91,8 +93,13 @@ class SweepSink {
   // Records a finished point: appended to the journal (flushed), then written to the partial
   // CSV once every earlier point is written.
   void deliver(std::size_t index, const std::string& row);
-  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal.
-  void deliver(const std::vector<std::pair<std::size_t, std::string>>& rows);
+  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal. The
+  // rows are moved into the sink.
+  void deliver(std::vector<std::pair<std::size_t, std::string>> rows);
+  // deliver(rows), then take(max, WhenAhead::wait) in the same hold of the lock: one lock a batch
+  // for a worker that goes on (two, delivering and taking apart, met more often at the lock).
+  std::vector<std::size_t> deliver_and_take(std::vector<std::pair<std::size_t, std::string>> rows,
+                                            std::size_t max);
 
   // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
@@ -117,9 +124,29 @@ class SweepSink {
   // for --resume and returns false; otherwise stages the CSV (a copy of the partial), calls
   // `between`, which commits it (and a sidecar around it), then removes journal and partial.
   bool commit_csv(const std::function<void(StagedFile& csv)>& between);
-  void write_ready();                                      // caller holds mutex_
-  void record(std::size_t index, const std::string& row);  // caller holds mutex_
-  void count(const std::string& row);
+  // What the counts take from a row: where its route and integrator are, and its status.
+  struct RowFacts {
+    std::size_t route = 0, route_size = 0, integrator = 0, integrator_size = 0;
+    ImpactStatus status = ImpactStatus::failed;
+  };
+  // A finished row with its journal line's head ("index checksum ") and its facts, made before
+  // the lock is taken.
+  struct PreparedRow {
+    std::size_t index = 0;
+    std::string row;
+    std::array<char, 48> head{};
+    std::size_t head_size = 0;
+    RowFacts facts;
+  };
+  RowFacts facts(const std::string& row) const;
+  PreparedRow prepare(std::size_t index, std::string row) const;
+  std::vector<PreparedRow> prepare(std::vector<std::pair<std::size_t, std::string>> rows) const;
+  void record_batch(std::vector<PreparedRow>& rows);  // caller holds mutex_; flushes
+  std::vector<std::size_t> take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
+                                       WhenAhead when_ahead);
+  void write_ready();                                         // caller holds mutex_
+  void record(PreparedRow&& row);                             // caller holds mutex_
+  void count(const std::string& row, const RowFacts& facts);  // caller holds mutex_
   // Reads the journal's rows after its header into pending_ (and the partial CSV); returns the
   // bytes of its whole lines.
   std::uintmax_t read_journal_rows(std::istream& in, const SweepRequest& request);
@@ -131,7 +158,8 @@ class SweepSink {
   std::size_t total_ = 0;
   std::size_t resumed_ = 0;
   std::size_t damaged_ = 0;
-  std::size_t axis_count_ = 0;  // scene axes: the CSV's result columns come after them
+  std::size_t axis_count_ = 0;          // scene axes: the CSV's result columns come after them
+  std::array<int, 3> count_columns_{};  // the route, integrator and status columns' indices
   std::atomic<int> output_errno_{0};
   std::atomic<bool> stop_{false};
   mutable std::mutex mutex_;
