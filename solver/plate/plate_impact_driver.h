@@ -6,6 +6,7 @@
 // with dop853 against 832 with dopri5, e the same to 1e-9.
 #pragma once
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -122,6 +123,40 @@ class PlateImpactDriver {
     }
   }
 
+  // What the roots read: z_kin and its rate (plate_system.h). The locator works on these two
+  // numbers, interpolated as linear functionals of the stepper's continuous extension where the
+  // stepper offers that (dop853: two sums over the stages once per step instead of the
+  // interpolant of every mode at every probe), else from the interpolated state.
+  using EventState = std::array<double, 2>;
+  static EventState event_state(const State& x) {
+    return {System::z_kin(x), System::z_kin_rate(x)};
+  }
+
+  class EventInterpolant {
+   public:
+    explicit EventInterpolant(PlateImpactDriver& d) : d_(d) {}
+    void operator()(double t, EventState& s) {
+      if constexpr (requires { d_.stepper_.dense_value(std::array<double, 8>{}, 0.0); }) {
+        if (!ready_) {
+          z_ = d_.stepper_.dense_functional(d_.sys_,
+                                            [](const State& x) { return System::z_kin(x); });
+          rate_ = d_.stepper_.dense_functional(
+              d_.sys_, [](const State& x) { return System::z_kin_rate(x); });
+          ready_ = true;
+        }
+        s = {d_.stepper_.dense_value(z_, t), d_.stepper_.dense_value(rate_, t)};
+      } else {
+        d_.stepper_.interpolate(d_.sys_, t, d_.sample_);
+        s = event_state(d_.sample_);
+      }
+    }
+
+   private:
+    PlateImpactDriver& d_;
+    bool ready_ = false;
+    std::array<double, 8> z_{}, rate_{};
+  };
+
   // The roots active on the current branch, earliest crossing on the last step: (t, x) set there.
   std::optional<Root> locate(double& t, State& x) {
     RootSet<3> set;
@@ -144,22 +179,23 @@ class PlateImpactDriver {
     const double zk_reload =
         static_cast<double>(sys_.history.z_max) / sys_.length() + sys_.compliance() * reload_force_;
     const double zk_zero = zero_force_point();
-    auto g = [&](int i, const State& s) {
+    auto g = [&](int i, const EventState& s) {
       switch (meaning[static_cast<std::size_t>(i)]) {
         case Root::max_compression:
-          return System::z_kin_rate(s);
+          return s[1];
         case Root::segment_end:
-          return System::z_kin(s) - zk_end;
+          return s[0] - zk_end;
         case Root::reload:
-          return System::z_kin(s) - zk_reload;
+          return s[0] - zk_reload;
         case Root::separation:
-          return System::z_kin(s) - zk_zero;
+          return s[0] - zk_zero;
       }
       return 0.0;
     };
-    auto interp = [&](double tt, State& s) { stepper_.interpolate(sys_, tt, s); };
-    const auto ec = locate_earliest<3>(stepper_.t0(), stepper_.x0(), stepper_.t1(), stepper_.x1(),
-                                       interp, set, g, LocatorOptions{}, true);
+    EventInterpolant interp(*this);
+    const auto ec =
+        locate_earliest<3>(stepper_.t0(), event_state(stepper_.x0()), stepper_.t1(),
+                           event_state(stepper_.x1()), interp, set, g, LocatorOptions{}, true);
     if (!ec.t) {
       t = stepper_.t1();
       x = stepper_.x1();
