@@ -69,7 +69,7 @@ void register_plate() {
       {"drop-weight-coupon", LawKind::elastoplastic}};
   for (const auto& [name, law] : scenes) {
     const Scene scene = load_scene(name);
-    for (double cutoff : {20.0, 40.0, 80.0}) {
+    for (double cutoff : {20.0, 40.0, 50.0, 80.0}) {
       PlateImpactOptions opt;
       opt.cutoff = cutoff;
       opt.rtol = 1e-8;

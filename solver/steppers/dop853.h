@@ -26,7 +26,7 @@
 //   r1 = x1 - x0, r2 = h k0 - r1, r3 = r1 - h k12 - r2, r_{4+q} = h sum_j d[q][j] k_j.
 // The extension is linear in x0, x1 and the stages, so a linear functional L of the state (a sum
 // of components) has its own seven coefficients L(r_i) = the same formulas over L(x0), L(x1),
-// L(k_j): dense_functional() computes those from the 16 stage values of L, without the r's of
+// L(k_j): dense_functionals() computes those from the 16 stage values of L, without the r's of
 // every component (the plate's event locator reads z = alpha - sum u_k of ~1000 components).
 // With IntegratorOptions::fixed_step the error control is off and h = dt (convergence studies).
 #pragma once
@@ -220,24 +220,36 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   // the stages the continuous extension's r's weigh (d[q][j] != 0, with k0 and k12)
   static constexpr std::array<std::size_t, 12> kDenseStages{0,  5,  6,  7,  8,  9,
                                                             10, 11, 12, 13, 14, 15};
-  // A linear functional L (L(state) -> T, L(a x + b y) = a L(x) + b L(y)) of the continuous
-  // extension on the last step: {L(x0), L(r1), ..., L(r7)} (header), to evaluate by
-  // dense_value(). The extra stages are computed once per step, the r's of the components not.
-  template <class Functional>
-  std::array<T, 8> dense_functional(const System& sys, Functional&& L) const {
+  // K linear functionals at once, L(state) -> std::array<T, K> (each L_i(a x + b y) = a L_i(x)
+  // + b L_i(y)), of the continuous extension on the last step: for each, {L(x0), L(r1), ...,
+  // L(r7)} (header), to evaluate by dense_value(). One pass of L over each stage; the extra
+  // stages are computed once per step, the r's of the components not.
+  template <std::size_t K, class Functionals>
+  std::array<std::array<T, 8>, K> dense_functionals(const System& sys, Functionals&& L) const {
     using dop853_tableau::d;
     if (!stages_ready_) prepare_dense_stages(sys);
     const T h = t1_ - t0_;
-    std::array<T, 16> lk{};
+    std::array<std::array<T, K>, 16> lk{};
     for (const std::size_t j : kDenseStages) lk[j] = L(k_[j]);
-    const T l0 = L(x0_), dx = L(x1_) - l0, bspl = h * lk[0] - dx;
-    std::array<T, 8> c{l0, dx, bspl, dx - h * lk[12] - bspl, 0, 0, 0, 0};
-    for (std::size_t q = 0; q < 4; ++q) {
-      T sum = 0;
-      for (const std::size_t j : kDenseStages) sum += d[q][j] * lk[j];
-      c[4 + q] = h * sum;
+    const std::array<T, K> l0 = L(x0_), l1 = L(x1_);
+    std::array<std::array<T, 8>, K> out{};
+    for (std::size_t i = 0; i < K; ++i) {
+      const T dx = l1[i] - l0[i], bspl = h * lk[0][i] - dx;
+      std::array<T, 8>& c = out[i];
+      c = {l0[i], dx, bspl, dx - h * lk[12][i] - bspl, 0, 0, 0, 0};
+      for (std::size_t q = 0; q < 4; ++q) {
+        T sum = 0;
+        for (const std::size_t j : kDenseStages) sum += d[q][j] * lk[j][i];
+        c[4 + q] = h * sum;
+      }
     }
-    return c;
+    return out;
+  }
+  // One functional, L(state) -> T.
+  template <class Functional>
+  std::array<T, 8> dense_functional(const System& sys, Functional&& L) const {
+    return dense_functionals<1>(sys,
+                                [&](const state_type& x) { return std::array<T, 1>{L(x)}; })[0];
   }
   // The functional's value at t on the last step from dense_functional()'s coefficients.
   T dense_value(const std::array<T, 8>& c, T t) const {
