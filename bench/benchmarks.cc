@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "scene/input_error.h"
 #include "solver/atomic_file.h"
+#include "solver/plate/plate_impact.h"
 #include "solver/simulate.h"
 
 namespace ivv::bench {
@@ -43,7 +45,54 @@ void one_impact(benchmark::State& state, const SimulationRequest& req) {
   state.counters["e"] = r.e;
 }
 
+// One finite-plate impact (solver/plate/plate_impact.h) of a shipped scene, at a fixed cut-off
+// or (truncation_tol > 0) with the cut-off chosen for it, all its runs timed.
+void one_plate_impact(benchmark::State& state, const Scene& scene, LawKind law,
+                      const PlateImpactOptions& opt) {
+  PlateImpactResult r;
+  for (auto _ : state) {
+    r = simulate_plate_impact(scene, law, {}, opt);
+    benchmark::DoNotOptimize(r);
+    if (!r.ok) {
+      state.SkipWithError(("plate impact failed: " + r.reason).c_str());
+      break;
+    }
+  }
+  state.counters["modes"] = static_cast<double>(r.mode_count);
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["e"] = r.e;
+}
+
+void register_plate() {
+  const std::pair<const char*, LawKind> scenes[] = {
+      {"steel-ball-on-finite-steel-plate", LawKind::hertz},
+      {"drop-weight-coupon", LawKind::elastoplastic}};
+  for (const auto& [name, law] : scenes) {
+    const Scene scene = load_scene(name);
+    for (double cutoff : {20.0, 40.0, 50.0, 80.0}) {
+      PlateImpactOptions opt;
+      opt.cutoff = cutoff;
+      opt.rtol = 1e-8;
+      opt.atol = 1e-10;
+      benchmark::RegisterBenchmark(
+          ("plate/" + std::string(name) + "/cutoff=" + std::to_string(static_cast<int>(cutoff)))
+              .c_str(),
+          one_plate_impact, scene, law, opt)
+          ->Unit(benchmark::kMillisecond);
+    }
+    PlateImpactOptions chosen;
+    chosen.cutoff = kPlateFirstCutoff;
+    chosen.truncation_tol = kPlateTruncationTol;
+    chosen.rtol = 1e-8;
+    chosen.atol = 1e-10;
+    benchmark::RegisterBenchmark(("plate/" + std::string(name) + "/truncation-tol=1e-6").c_str(),
+                                 one_plate_impact, scene, law, chosen)
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
 void register_all() {
+  register_plate();
   for (IntegratorKind k : production_integrators()) {
     const SimulationRequest req = paper_request(k, Damping::coefficient(kPaperDashpot));
     benchmark::RegisterBenchmark(("paper/default/" + std::string(to_string(k))).c_str(), one_impact,

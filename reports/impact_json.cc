@@ -241,16 +241,24 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
                                  ? nlohmann::json(flexural_return_time(plate, run.result.t_contact))
                                  : nlohmann::json(nullptr)}}},
       {"options",
-       {{"rtol", run.options.rtol}, {"atol", run.options.atol}, {"cutoff", run.options.cutoff}}},
+       {{"rtol", run.options.rtol},
+        {"atol", run.options.atol},
+        {"truncation_tol", run.options.truncation_tol}}},
       {"truncation",
        {{"mode_count", run.result.mode_count},
+        {"cutoff", finite_or_null(run.result.cutoff)},
         {"omega_cut", finite_or_null(run.result.omega_cut)},
-        {"e_at_half_cutoff", finite_or_null(run.e_half_cutoff)},
+        {"coarser_cutoff", finite_or_null(run.result.cutoff_coarser)},
+        {"e_at_coarser_cutoff", finite_or_null(run.e_half_cutoff)},
         {"estimated_error_e", finite_or_null(run.truncation_error)},
+        {"tolerance", run.options.truncation_tol},
+        {"runs", run.result.cutoff_runs},
         {"rule",
          "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as the "
-         "static compliance C_res in series; error of e estimated as |e - e(cutoff/2)|/7 "
-         "(observed order 3 in the cut-off)"}}},
+         "static compliance C_res in series; error of e estimated from two cut-offs c' < c as "
+         "1.25 |e(c) - e(c')|/((c/c')^3 - 1) (observed order 3 in the cut-off, Roache's safety "
+         "factor 1.25); the cut-off raised from 40 until that estimate is within the "
+         "tolerance"}}},
       {"result", plate_result_json(run.result)},
       {"regime", run.regime ? plate_regime_json(*run.regime) : nlohmann::json(nullptr)},
       {"model_choice", run.regime ? plate_model_choice_json(run) : nlohmann::json(nullptr)},

@@ -200,8 +200,9 @@ std::string plate_impact_summary(const PlateRun& run) {
   out << "  COR          e = " << r.e
       << " (once no further contact is possible), e_first = " << r.e_first
       << " (at the first separation)\n"
-      << "  truncation   e at half the cut-off " << run.e_half_cutoff
-      << ": the modes left out cost about " << run.truncation_error << " in e\n"
+      << "  truncation   cut-off " << r.cutoff << ", e at cut-off " << r.cutoff_coarser << " "
+      << run.e_half_cutoff << ": the modes left out cost about " << run.truncation_error
+      << " in e (tolerance " << run.options.truncation_tol << ")\n"
       << "  contacts     " << r.contacts.size() << ", F_max = " << r.F_max
       << " N, t_contact = " << r.t_contact << " s (the first contact)\n";
   for (std::size_t i = 0; i < r.contacts.size() && i < 20; ++i) {

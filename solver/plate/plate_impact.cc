@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "scene/input_error.h"
 #include "solver/driver/event_locator.h"
+#include "solver/format.h"
 #include "solver/plate/odeint_dense_stepper.h"
 #include "solver/plate/plate_impact_driver.h"
 #include "solver/plate/plate_modes.h"
@@ -32,27 +34,53 @@ void require_plate_scene(const Scene& scene, LawKind law) {
                                                   " law; give yield_strength or shear_strength");
 }
 
+// What the runs of one impact at different cut-offs share: the plate, the law's scales, the
+// rate omega_s the cut-off multiplies (plate_impact.h) and C_static.
+struct PlateSetup {
+  FinitePlate plate;
+  Scales scales;
+  double omega_s = 0.0;  // [rad/s]
+  StaticCompliance static_compliance;
+};
+
 template <class Law>
-PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedParameters& p,
-                            const PlateImpactOptions& opt) {
-  const Scales k = scales(scene, p, Law::scale_basis);
-  const Structure& st = scene.damping.structure;
-  const FinitePlate plate =
-      finite_plate(st, scene.target_youngs_modulus, scene.target_poisson_ratio);
+PlateSetup plate_setup(const Scene& scene, const DerivedParameters& p) {
+  PlateSetup s{finite_plate(scene.damping.structure, scene.target_youngs_modulus,
+                            scene.target_poisson_ratio),
+               scales(scene, p, Law::scale_basis),
+               0.0,
+               {}};
   const double z_mH =
       std::pow(5.0 * p.effective_mass * scene.velocity * scene.velocity / (4.0 * p.K_h), 0.4);
   const double k_H = 1.5 * p.K_h * std::sqrt(z_mH);
-  const double omega_local = std::sqrt(k_H * 4.0 / (plate.mass()));
-  const double omega_s = std::max(1.0 / k.time, omega_local);
-  const PlateModes modes = opt.cutoff == 0.0
-                               ? static_plate_modes(plate)
-                               : plate_modes(plate, {opt.cutoff * omega_s, opt.max_modes});
+  const double omega_local = std::sqrt(k_H * 4.0 / (s.plate.mass()));
+  s.omega_s = std::max(1.0 / s.scales.time, omega_local);
+  s.static_compliance = plate_static_compliance(s.plate);
+  return s;
+}
+
+// One run at the cut-off `cutoff` (a multiple of omega_s; 0: no mode).
+template <class Law>
+PlateImpactResult run_plate(const Law& law, const PlateSetup& setup, const DerivedParameters& p,
+                            const PlateImpactOptions& opt, double cutoff) {
+  const Scales& k = setup.scales;
+  PlateModes modes;
+  if (cutoff == 0.0) {
+    modes = static_plate_modes(setup.plate);
+  } else {
+    PlateModeOptions mo;
+    mo.omega_cut = cutoff * setup.omega_s;
+    mo.max_modes = opt.max_modes;
+    mo.static_compliance = setup.static_compliance;
+    modes = plate_modes(setup.plate, mo);
+  }
   PlateImpactResult out;
   out.mode_count = modes.modes.size();
+  out.cutoff = cutoff;
   out.omega_cut = modes.omega_cut;
   out.static_compliance = modes.static_compliance.value;
   out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
-  out.plate_mass = plate.mass();
+  out.plate_mass = setup.plate.mass();
   try {
     if constexpr (!Law::rate_dependent) {
       using System = PlateSystem<Law>;
@@ -76,6 +104,68 @@ PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedPar
     out.reason = e.what();
   }
   return out;
+}
+
+// The refusal of a cut-off that keeps more than max_modes modes (plate_impact.h).
+void require_mode_count(const PlateSetup& setup, const PlateImpactOptions& opt, double cutoff,
+                        double estimate) {
+  const std::size_t n = count_plate_modes(setup.plate, cutoff * setup.omega_s);
+  if (n <= opt.max_modes) return;
+  const std::string with_fewer =
+      std::isnan(estimate) ? "" : "; the error with fewer is estimated " + fmt(estimate, 3);
+  throw InputError("structure", "the truncation tolerance " + fmt(opt.truncation_tol, 3) +
+                                    " in e needs about " + std::to_string(n) + " modes (cut-off " +
+                                    fmt(cutoff, 4) + with_fewer + "), more than the limit of " +
+                                    std::to_string(opt.max_modes) +
+                                    ": the plate is large against the contact, so the infinite "
+                                    "plate (remove length_x, length_y) may be the model wanted");
+}
+
+// The cut-off chosen for options.truncation_tol by the rule of the header.
+template <class Law>
+PlateImpactResult run_to_tolerance(const Law& law, const PlateSetup& setup,
+                                   const DerivedParameters& p, const PlateImpactOptions& opt) {
+  double c_prev = 0.5 * opt.cutoff, c = opt.cutoff;
+  PlateImpactResult coarse = run_plate(law, setup, p, opt, c_prev);
+  if (!coarse.ok) return coarse;
+  int runs = 1;
+  for (int refinement = 0;; ++refinement) {
+    PlateImpactResult fine = run_plate(law, setup, p, opt, c);
+    fine.cutoff_runs = ++runs;
+    if (!fine.ok) return fine;
+    const double est = kTruncationSafety * std::abs(fine.e - coarse.e) /
+                       (std::pow(c / c_prev, kTruncationOrder) - 1.0);
+    fine.truncation_error = est;
+    fine.cutoff_coarser = c_prev;
+    fine.e_coarser = coarse.e;
+    if (est <= opt.truncation_tol) return fine;
+    if (refinement == kMaxCutoffRefinements) {
+      fine.ok = false;
+      fine.reason = "the truncation estimate " + fmt(est, 3) + " at cut-off " + fmt(c, 4) +
+                    " is still above the tolerance " + fmt(opt.truncation_tol, 3) + " after " +
+                    std::to_string(kMaxCutoffRefinements) + " refinements";
+      return fine;
+    }
+    const double grow =
+        std::max(1.25, 1.2 * std::pow(est / opt.truncation_tol, 1.0 / kTruncationOrder));
+    require_mode_count(setup, opt, c * grow, est);
+    c_prev = c;
+    c *= grow;
+    coarse = std::move(fine);
+  }
+}
+
+template <class Law>
+PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedParameters& p,
+                            const PlateImpactOptions& opt) {
+  if (!(opt.truncation_tol >= 0.0 && std::isfinite(opt.truncation_tol)))
+    throw std::invalid_argument("PlateImpactOptions::truncation_tol must be finite and >= 0");
+  const PlateSetup setup = plate_setup<Law>(scene, p);
+  if (opt.truncation_tol > 0.0 && opt.cutoff > 0.0) {
+    require_mode_count(setup, opt, opt.cutoff, PlateImpactResult::nan);
+    return run_to_tolerance(law, setup, p, opt);
+  }
+  return run_plate(law, setup, p, opt, opt.cutoff);
 }
 
 }  // namespace

@@ -132,6 +132,50 @@ TEST(PlateImpact, TwoSteppersAgree) {
   EXPECT_LT(a.steps, b.steps);  // the eighth-order pair takes fewer steps
 }
 
+// The cut-off chosen for a truncation tolerance: the answer is the run at the chosen cut-off
+// (the same e as a fixed run there, to rounding: the same computation), its estimate within the
+// tolerance, from a coarser run whose e it names.
+TEST(PlateImpact, CutoffChosenForTheTruncationTolerance) {
+  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  PlateImpactOptions opt;
+  opt.cutoff = 10.0;
+  opt.truncation_tol = 1e-5;
+  const PlateImpactResult r = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_GE(r.cutoff_runs, 2);
+  EXPECT_LE(r.truncation_error, opt.truncation_tol);
+  EXPECT_LT(r.cutoff_coarser, r.cutoff);
+  EXPECT_GE(r.cutoff, opt.cutoff);
+  const double p = std::pow(r.cutoff / r.cutoff_coarser, kTruncationOrder) - 1.0;
+  EXPECT_DOUBLE_EQ(r.truncation_error, kTruncationSafety * std::abs(r.e - r.e_coarser) / p);
+  PlateImpactOptions fixed;
+  fixed.cutoff = r.cutoff;
+  const PlateImpactResult f = simulate_plate_impact(s, LawKind::hertz, {}, fixed);
+  ASSERT_TRUE(f.ok) << f.reason;
+  EXPECT_EQ(f.e, r.e);
+  EXPECT_EQ(f.mode_count, r.mode_count);
+  EXPECT_TRUE(std::isnan(f.truncation_error));
+}
+
+// A tolerance that needs more modes than the limit is refused by name: how many, and that the
+// infinite plate may be the model wanted.
+TEST(PlateImpact, RefusesATruncationNeedingTooManyModes) {
+  const Scene s = ball_on_plate(0.2, 0.2, 0.002);
+  PlateImpactOptions opt;
+  opt.truncation_tol = 1e-6;
+  opt.max_modes = 100;
+  try {
+    simulate_plate_impact(s, LawKind::hertz, {}, opt);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "structure");
+    const std::string what = e.what();
+    EXPECT_NE(what.find("modes"), std::string::npos) << what;
+    EXPECT_NE(what.find("infinite plate"), std::string::npos) << what;
+    EXPECT_NE(what.find("100"), std::string::npos) << what;
+  }
+}
+
 TEST(PlateImpact, RefusesWhatItDoesNotModel) {
   Scene s = ball_on_plate(0.05, 0.04, 0.001);
   try {

@@ -152,7 +152,8 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
   }
   std::sort(out.modes.begin(), out.modes.end(),
             [](const PlateMode& x, const PlateMode& y) { return x.omega < y.omega; });
-  out.static_compliance = plate_static_compliance(p);
+  out.static_compliance =
+      options.static_compliance ? *options.static_compliance : plate_static_compliance(p);
   double kept = 0.0;
   for (auto it = out.modes.rbegin(); it != out.modes.rend(); ++it)  // small terms first
     kept += it->gain / (it->omega * it->omega);

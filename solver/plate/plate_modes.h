@@ -47,6 +47,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "scene/structure.h"
@@ -78,6 +79,9 @@ StaticCompliance plate_static_compliance(const FinitePlate& p);
 struct PlateModeOptions {
   double omega_cut = 0.0;          // keep the modes with omega <= omega_cut [rad/s]
   std::size_t max_modes = 200000;  // more kept modes than this is bad input (InputError)
+  // C_static of this plate when already computed (plate_static_compliance() is then not
+  // called again: several cut-offs of one plate share it)
+  std::optional<StaticCompliance> static_compliance = std::nullopt;
 };
 
 struct PlateModes {

@@ -71,15 +71,12 @@ PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
           run.options.rtol);
   require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
           run.options.atol);
+  run.options.truncation_tol = kPlateTruncationTol;
+  run.options.cutoff = kPlateFirstCutoff;
   run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
   if (!run.result.ok) return run;
-  PlateImpactOptions half = run.options;
-  half.cutoff /= 2.0;
-  const PlateImpactResult r = simulate_plate_impact(run.scene, run.law, run.parameters, half);
-  if (r.ok) {
-    run.e_half_cutoff = r.e;
-    run.truncation_error = std::abs(run.result.e - r.e) / 7.0;
-  }
+  run.e_half_cutoff = run.result.e_coarser;
+  run.truncation_error = run.result.truncation_error;
   run.regime =
       plate_regime({run.scene, run.law, run.parameters, run.options}, run.result, tolerance);
   return run;

@@ -15,9 +15,9 @@
 // estimated error of the answer = its measured distance from the full plate + the full plate's
 // own truncation error (below).
 //
-// The truncation's cost in e is estimated by a second run at half the cut-off: with the residual
-// compliance e converges as cut-off^-3 (case plate.convergence.with-residual measures the
-// order: 3.0), so the error of the full run is about |e - e_half|/(2^3 - 1).
+// The cut-off is chosen for a truncation error of kPlateTruncationTol (1e-6) in e by the rule of
+// plate_impact.h (two cut-offs c' < c, est = |e(c) - e(c')|/((c/c')^3 - 1)), which also gives
+// the truncation's estimated cost in e.
 #pragma once
 
 #include <limits>
@@ -36,8 +36,8 @@ struct PlateRun {
   LawParameters parameters;
   PlateImpactOptions options;
   PlateImpactResult result;           // the full plate
-  double e_half_cutoff = nan;         // e at cut-off/2
-  double truncation_error = nan;      // |e - e_half|/7
+  double e_half_cutoff = nan;         // e at the coarser cut-off of the rule's last pair
+  double truncation_error = nan;      // the rule's estimate (plate_impact.h)
   std::optional<PlateModel> forced;   // --model other than auto
   std::optional<PlateRegime> regime;  // when the full plate ran (result.ok)
 

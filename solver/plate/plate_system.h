@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -54,6 +55,16 @@ class PlateSystem {
     double w = 0.0;
     for (std::size_t i = x.size() - 1; i >= 3; i -= 2) w += x[i];
     return x[1] - w;
+  }
+
+  // {z_kin, its rate} in one pass over the state (the event locator's functionals).
+  static std::array<double, 2> kinematic_gap(const state_type& x) {
+    double w = 0.0, w_rate = 0.0;
+    for (std::size_t i = 2; i + 1 < x.size(); i += 2) {
+      w += x[i];
+      w_rate += x[i + 1];
+    }
+    return {x[0] - w, x[1] - w_rate};
   }
 
   // The law's force and stiffness at normalised z on the current branch.

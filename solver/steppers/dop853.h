@@ -24,6 +24,10 @@
 //   x(t0 + theta h) = x0 + theta (r1 + s1 (r2 + theta (r3 + s1 (r4 + theta (r5 + s1 (r6 +
 //                     theta r7))))))
 //   r1 = x1 - x0, r2 = h k0 - r1, r3 = r1 - h k12 - r2, r_{4+q} = h sum_j d[q][j] k_j.
+// The extension is linear in x0, x1 and the stages, so a linear functional L of the state (a sum
+// of components) has its own seven coefficients L(r_i) = the same formulas over L(x0), L(x1),
+// L(k_j): dense_functionals() computes those from the 16 stage values of L, without the r's of
+// every component (the plate's event locator reads z = alpha - sum u_k of ~1000 components).
 // With IntegratorOptions::fixed_step the error control is off and h = dt (convergence studies).
 #pragma once
 
@@ -186,6 +190,7 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     size_like(tmp_, x);
     sys(x1_, k_[12], t1_);
     dense_ready_ = false;
+    stages_ready_ = false;
   }
 
   StepResult step(const System& sys) {
@@ -193,6 +198,7 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     x0_ = x1_;
     k_[0] = k_[12];
     dense_ready_ = false;
+    stages_ready_ = false;
     this->begin_attempts();
     for (;;) {
       const T h = h_;
@@ -211,6 +217,48 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     const T th = (t - t0_) / (t1_ - t0_);
     for (std::size_t m = 0; m < x1_.size(); ++m) out[m] = dense(th, m);
   }
+  // the stages the continuous extension's r's weigh (d[q][j] != 0, with k0 and k12)
+  static constexpr std::array<std::size_t, 12> kDenseStages{0,  5,  6,  7,  8,  9,
+                                                            10, 11, 12, 13, 14, 15};
+  // K linear functionals at once, L(state) -> std::array<T, K> (each L_i(a x + b y) = a L_i(x)
+  // + b L_i(y)), of the continuous extension on the last step: for each, {L(x0), L(r1), ...,
+  // L(r7)} (header), to evaluate by dense_value(). One pass of L over each stage; the extra
+  // stages are computed once per step, the r's of the components not.
+  template <std::size_t K, class Functionals>
+  std::array<std::array<T, 8>, K> dense_functionals(const System& sys, Functionals&& L) const {
+    using dop853_tableau::d;
+    if (!stages_ready_) prepare_dense_stages(sys);
+    const T h = t1_ - t0_;
+    std::array<std::array<T, K>, 16> lk{};
+    for (const std::size_t j : kDenseStages) lk[j] = L(k_[j]);
+    const std::array<T, K> l0 = L(x0_), l1 = L(x1_);
+    std::array<std::array<T, 8>, K> out{};
+    for (std::size_t i = 0; i < K; ++i) {
+      const T dx = l1[i] - l0[i], bspl = h * lk[0][i] - dx;
+      std::array<T, 8>& c = out[i];
+      c = {l0[i], dx, bspl, dx - h * lk[12][i] - bspl, 0, 0, 0, 0};
+      for (std::size_t q = 0; q < 4; ++q) {
+        T sum = 0;
+        for (const std::size_t j : kDenseStages) sum += d[q][j] * lk[j][i];
+        c[4 + q] = h * sum;
+      }
+    }
+    return out;
+  }
+  // One functional, L(state) -> T.
+  template <class Functional>
+  std::array<T, 8> dense_functional(const System& sys, Functional&& L) const {
+    return dense_functionals<1>(sys,
+                                [&](const state_type& x) { return std::array<T, 1>{L(x)}; })[0];
+  }
+  // The functional's value at t on the last step from dense_functional()'s coefficients.
+  T dense_value(const std::array<T, 8>& c, T t) const {
+    const T th = (t - t0_) / (t1_ - t0_), s1 = 1 - th;
+    return c[0] +
+           th * (c[1] +
+                 s1 * (c[2] + th * (c[3] + s1 * (c[4] + th * (c[5] + s1 * (c[6] + th * c[7]))))));
+  }
+
   // The components listed in `which` only (the rest of `out` untouched): the event locator's
   // root functions read two of the six (ImpactSystem::event_components).
   template <std::size_t K>
@@ -322,14 +370,20 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     return (h < 0 ? -h : h) * sum5 / sqrt(T(n) * deno);
   }
 
-  // The three extra stages and the coefficient vectors r of the continuous extension, once per
-  // step and only for steps that are interpolated (most steps of an impact are not).
-  void prepare_dense(const System& sys) const {
-    using dop853_tableau::d;
+  // The three extra stages of the continuous extension, once per step and only for steps that
+  // are interpolated (most steps of an impact are not).
+  void prepare_dense_stages(const System& sys) const {
     const T h = t1_ - t0_;
     stage<13, 0, 6, 7, 8, 9, 10, 11, 12>(sys, h);
     stage<14, 0, 5, 6, 7, 10, 11, 12, 13>(sys, h);
     stage<15, 0, 5, 6, 7, 8, 12, 13, 14>(sys, h);
+    stages_ready_ = true;
+  }
+  // The extra stages and the coefficient vectors r of every component.
+  void prepare_dense(const System& sys) const {
+    using dop853_tableau::d;
+    const T h = t1_ - t0_;
+    if (!stages_ready_) prepare_dense_stages(sys);
     for (std::size_t m = 0; m < x0_.size(); ++m) {
       const T dx = x1_[m] - x0_[m];
       const T bspl = h * k_[0][m] - dx;
@@ -346,7 +400,8 @@ class Dop853Stepper : public AdaptiveStepState<System> {
   mutable std::array<state_type, 16> k_{};
   mutable std::array<state_type, 7> r_{};
   mutable bool dense_ready_ = false;
-  mutable state_type tmp_{};  // a stage's argument
+  mutable bool stages_ready_ = false;  // k_[13..15] of the last step
+  mutable state_type tmp_{};           // a stage's argument
 };
 
 }  // namespace ivv

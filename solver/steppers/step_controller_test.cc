@@ -249,5 +249,30 @@ TEST(ErrorControlledStepperState, Dop853RunsAVectorStateAsAnArray) {
   expect_same_run_for_vector_state<Dop853Stepper>();
 }
 
+// dense_functional() is the continuous extension of a linear functional of the state (the plate's
+// z = alpha - sum u_k): at every point of a step it equals the functional of the interpolated
+// state, the same sums in another order, to rounding (a few ulp of the terms' magnitude, 1e-14
+// with room for the six components' sum).
+TEST(ErrorControlledStepperState, Dop853DenseFunctionalIsTheFunctionalOfTheInterpolant) {
+  IntegratorOptions opt;
+  opt.rtol = opt.atol = 1e-8;
+  opt.initial_dt = 1e-3;
+  Dop853Stepper<ArraySystem> st(opt);
+  st.start(ArraySystem{}, 0.0, ArraySystem::initial());
+  auto L = [](const std::array<double, 6>& x) { return x[0] - x[2] + 2.0 * x[4] - 0.5 * x[5]; };
+  for (int k = 0; k < 20; ++k) {
+    ASSERT_TRUE(st.step(ArraySystem{}).ok);
+    const std::array<double, 8> c = st.dense_functional(ArraySystem{}, L);
+    for (double th : {0.0, 0.1, 0.37, 0.5, 0.93, 1.0}) {
+      const double t = st.t0() + th * (st.t1() - st.t0());
+      std::array<double, 6> x{};
+      st.interpolate(ArraySystem{}, t, x);
+      double scale = 0.0;
+      for (double v : x) scale += std::abs(v);
+      EXPECT_NEAR(st.dense_value(c, t), L(x), 1e-14 * scale) << "step " << k << ", theta " << th;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ivv
