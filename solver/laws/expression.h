@@ -157,8 +157,8 @@ struct ExpressionLaw {
   double stored_energy(const Branch<double>& h, double z) const;
   std::optional<double> hysteresis_work(const Branch<double>&) const { return std::nullopt; }
   // int_0^z F_unload(s, 0) ds [J] on the unloading branch (law.h: separation_work; read only
-  // for a law that allows tension), by adaptive Gauss-Kronrod to 1e-12 relative; nullopt on
-  // first loading.
+  // for a law that allows tension), by 31-point Gauss-Kronrod panels to 1e-12 relative or
+  // 1e-13 F_ref z_ref absolute; nullopt on first loading.
   std::optional<double> separation_work(const Branch<double>& h, double z) const;
   // The declared force at z = 0 on first loading (law.h: onset_force), or nullopt.
   std::optional<double> onset_force() const { return expr->onset_force(); }
