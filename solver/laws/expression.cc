@@ -338,6 +338,21 @@ double refined(const F& f, double a, double b, const Panel& p, double tolerance,
 
 }  // namespace
 
+double CompiledExpressions::loading_speed_gain(double mass) const {
+  auto F = [&](double z) { return loading(z, v_ref_); };
+  if (!(F(0.0) < 0.0)) return 1.0;
+  // the first zero: bracketed by doubling from 1e-9 z_ref (to 1e6 z_ref, far past any contact
+  // the scene's v0 reaches), then bisected to adjacent doubles; none: the well to that reach
+  double lo = 0.0, hi = 1e-9 * z_ref_;
+  while (F(hi) < 0.0 && hi < 1e6 * z_ref_) lo = hi, hi *= 2;
+  if (F(hi) >= 0.0)
+    for (double mid = lo + 0.5 * (hi - lo); mid > lo && mid < hi; mid = lo + 0.5 * (hi - lo))
+      (F(mid) < 0.0 ? lo : hi) = mid;
+  const Panel whole = gauss_kronrod_panel(F, 0.0, hi);
+  const double W = -refined(F, 0.0, hi, whole, 1e-10 * std::abs(whole.integral), 10);
+  return std::sqrt(1.0 + 2.0 * std::max(W, 0.0) / (mass * v_ref_ * v_ref_));
+}
+
 template <bool Rate>
 std::optional<double> ExpressionLaw<Rate>::separation_work(const Branch<double>& h,
                                                            double z) const {
