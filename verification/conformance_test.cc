@@ -285,6 +285,28 @@ TEST(Conformance, AJkrTypeLawIsCapturedInItsWellWithoutADashpot) {
   EXPECT_FALSE(check(wrong, "dynamic.captured_below").passed) << wrong.full();
 }
 
+// The JKR-type law with a stiff dashpot (c = 1e-6 N s/m, zeta 1300-5100 over the grid): the
+// explicit integrators cannot reach the end (dashpot_stall.h) and say so at once, the reference
+// is rodas4 there, and the verdict is the law's: PASS, the explicit stops as notes. Before, the
+// check ran for hours (2e6 steps per explicit run, 2e7 per recheck, 9 ms a step).
+TEST(Conformance, AStiffDashpotEndsWithAVerdictAndTheExplicitStopsAsNotes) {
+  const auto req = bead_law("K_h*z^1.5", "K_h*z^1.5 - Fad*(1 - z/zmax)", "");
+  Claims claims;
+  claims.cor_nonincreasing_in_v0 = false;
+  claims.cor_nondecreasing_in_v0 = true;
+  Grid grid = bead_grid(req.scene);
+  grid.dashpots = {1e-6};
+  const Report r = run_conformance(registry_law(req), claims, grid);
+  EXPECT_TRUE(r.passed()) << r.full();
+  int stiff = 0;
+  for (const IntegratorNote& n : r.notes)
+    stiff += n.detail.find("needs an implicit integrator") != std::string::npos;
+  EXPECT_GT(stiff, 0) << r.full();
+  for (const CorPoint& p : r.cor) {
+    if (p.c == 1e-6) EXPECT_EQ(p.status, "captured") << p.v0;
+  }
+}
+
 // Walton-Braun with tension: unloading k2 (z - z0) pulls below z0, and the pull-off work is
 // k2 z0^2 / 2 exactly. With k2 = 4 k1 the rebound energy k1^2 z_m^2/(2 k2) is below it at every
 // v0: captured at the first unloading step, in a handful of steps.

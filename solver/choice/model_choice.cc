@@ -190,6 +190,8 @@ ModelDecision decide_model(const ValidatedRequest& v, RunOutput output) {
   ModelDecision d;
   d.integrator = effective_integrator(v);
   d.estimated_error = integrated_estimate(d.integrator, req.options);
+  if (req.law == LawKind::expression && v.expression())  // an attractive onset speeds it up
+    d.estimated_error *= v.expression()->loading_speed_gain(p.effective_mass);
   if (output == RunOutput::result_and_trajectory || req.law == LawKind::expression) return d;
   if (req.law == LawKind::elastoplastic && !p.has_dashpot()) {
     d.route = ModelRoute::closed_form_elastoplastic;

@@ -36,6 +36,7 @@
 
 #include "solver/consistency.h"
 #include "solver/driver/capture.h"
+#include "solver/driver/dashpot_stall.h"
 #include "solver/driver/event_locator.h"
 #include "solver/driver/hermite.h"
 #include "solver/driver/impact_events.h"
@@ -237,9 +238,12 @@ class ImpactDriver {
       const Earliest earliest = locate(active);
       if (!earliest.t) {
         emit_samples(t0, t1);
-        if (sys_.branch.phase == Phase::unloading)
+        if (sys_.branch.phase == Phase::unloading) {
           if (const auto e_bound = capture_after_step(sys_, stepper_.x1(), stepper_.steps(), opt_))
             return finish(ImpactStatus::captured, t1, stepper_.x1(), *e_bound);
+          if (std::optional<std::string> why = stalled(t0, t1))
+            return fail(FailureKind::step_limit, std::move(*why));
+        }
         continue;
       }
       T te = *earliest.t;
@@ -420,6 +424,30 @@ class ImpactDriver {
     scan_t0_ = stepper_.t0();
     scan_x0_ = stepper_.x0();
     return true;
+  }
+
+  // An explicit stepper whose steps (held by stability against a stiff dashpot) cannot reach
+  // the least time the impact still needs (dashpot_stall.h) within kStallMargin times the steps
+  // left: why, to fail now rather than at max_steps. Asked every 64th unloading step.
+  std::optional<std::string> stalled(T t0, T t1) {
+    if constexpr (Stepper::implicit) {
+      return std::nullopt;
+    } else {
+      if (++unloading_steps_ % 64 != 0) return std::nullopt;
+      const std::optional<double> dtau = least_remaining_time(sys_, stepper_.x1(), opt_);
+      const double h = static_cast<double>(t1 - t0);
+      const double left = static_cast<double>(opt_.max_steps - stepper_.steps());
+      if (!dtau || !(h > 0) || !(*dtau > kStallMargin * left * h)) return std::nullopt;
+      std::ostringstream os;
+      os << Stepper::name
+         << ": the impact cannot end before tau = " << static_cast<double>(t1) + *dtau
+         << " (the dashpot must first slow the impactor), " << *dtau / h
+         << " more steps of the present tau = " << h << ", over " << kStallMargin << " times the "
+         << left << " left of max_steps = " << opt_.max_steps
+         << ": a stiff scene (zeta = " << sys_.two_zeta / 2
+         << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
+      return os.str();
+    }
   }
 
   // The earliest crossing of the active events on the part of the step being scanned.
@@ -608,6 +636,7 @@ class ImpactDriver {
   bool resume_ = false;
   RootsAtEnd roots_at_end_;
   int separation_retakes_ = 0;                          // retake_to_separation() so far
+  long unloading_steps_ = 0;                            // stalled() so far
   std::string failure_;                                 // why advance() could not take a step
   FailureKind failure_kind_ = FailureKind::integrator;  // and its code
   T scan_t0_ = 0;

@@ -103,6 +103,12 @@ class CompiledExpressions {
   // The pull-off work of the unloading branch from z_max [J], computed by `compute` once per
   // z_max (the last one is kept: one compiled law per impact).
   double pull_off_work(double z_max, const std::function<double()>& compute) const;
+  // The largest speed the loading curve's attractive part can give an impactor of mass m [kg]
+  // that strikes at v0, in units of v0: sqrt(1 + 2 W/(m v0^2)), W = -int_0^{z0} F_load(s, v0) ds
+  // up to the first zero z0 of a loading force that starts below zero (a DMT jump-in: W =
+  // (3/5) F_ad z0); 1 where F_load(0) >= 0. The integrators' local error scales with the state,
+  // so their stated error of e (in units of v0) grows by this factor (model_choice.h).
+  double loading_speed_gain(double mass) const;
   bool uses_rate() const { return uses_rate_; }
   bool has_unloading_expression() const { return has_unload_; }
   double length_scale() const { return z_ref_; }     // z_ref [m]
@@ -157,8 +163,8 @@ struct ExpressionLaw {
   double stored_energy(const Branch<double>& h, double z) const;
   std::optional<double> hysteresis_work(const Branch<double>&) const { return std::nullopt; }
   // int_0^z F_unload(s, 0) ds [J] on the unloading branch (law.h: separation_work; read only
-  // for a law that allows tension), by adaptive Gauss-Kronrod to 1e-12 relative; nullopt on
-  // first loading.
+  // for a law that allows tension), by 31-point Gauss-Kronrod panels to 1e-12 relative or
+  // 1e-13 F_ref z_ref absolute; nullopt on first loading.
   std::optional<double> separation_work(const Branch<double>& h, double z) const;
   // The declared force at z = 0 on first loading (law.h: onset_force), or nullopt.
   std::optional<double> onset_force() const { return expr->onset_force(); }
