@@ -53,7 +53,7 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
     if (c.onset_force->find_first_not_of(" \t") == std::string::npos)
       throw InputError("--onset-force", "is empty; give the force [N] at z = 0, e.g. '-Fad'");
   }
-  const SimulationRequest req = to_request(options);
+  const SimulationRequest req = to_check_law_request(load_scene(options.scene), options);
   conformance::Grid grid = conformance::default_grid(req.scene);
   grid.options = req.options;
   if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0");

@@ -403,7 +403,8 @@ py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& check
       !get<double>(kw, "hc_k") && !get<double>(kw, "hc_mu"))
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
-  const SimulationRequest req = to_request(s.scene, request_options(s, kw, "check_law()"));
+  const SimulationRequest req =
+      to_check_law_request(s.scene, request_options(s, kw, "check_law()"));
   const conformance::Grid grid = check_grid(req, checks);
   const conformance::Claims claims = check_claims(req, checks);
   conformance::LawUnderTest law = conformance::registry_law(req);

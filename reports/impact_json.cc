@@ -225,6 +225,8 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
       {"scene", scene_json(s, derive(s))},
       {"model", "finite-plate"},
       {"law", std::string(to_string(run.law))},
+      // the law's parameters in use, and an expression law's force and unloading expressions
+      {"law_details", law_json(run.law_request())},
       {"plate",
        {{"length_x", plate.length_x},
         {"length_y", plate.length_y},

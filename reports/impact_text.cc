@@ -190,6 +190,9 @@ std::string plate_impact_summary(const PlateRun& run) {
   std::ostringstream out;
   out.precision(8);
   out << "finite plate  " << run.scene.name << ", law " << to_string(run.law)
+      << (run.law == LawKind::expression ? " F = " + run.expression.force : std::string())
+      << (run.expression.unload.empty() ? std::string()
+                                        : ", unloading F = " + run.expression.unload)
       << ", v0 = " << run.scene.velocity << " m/s, " << r.mode_count << " modes below "
       << r.omega_cut << " rad/s, C_res = " << r.residual_compliance
       << " of C_static = " << r.static_compliance << " m/N\n";

@@ -1,5 +1,6 @@
 #include "reports/law_report.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "reports/gnuplot_svg.h"
@@ -67,12 +68,37 @@ void check_report_dir(const fs::path& dir) {
   check_output_directory(dir, "--report");
 }
 
+namespace {
+
+// What the dynamic checks struck, and what the reloading checks ask of the law, in words.
+std::string scope_html(const conformance::Report& report) {
+  const bool plate = std::any_of(report.cor.begin(), report.cor.end(),
+                                 [](const conformance::CorPoint& c) { return c.finite_plate; });
+  std::string html =
+      plate ? "<p>The dynamic checks struck the scene's <b>finite plate</b>, by its own driver "
+              "(the impactor against the plate's modes, no dashpot): the energy ledger holds the "
+              "plate's vibration energy, the impulse is m (v<sub>0</sub> &minus; "
+              "v<sub>final</sub>), and the COR is the final one after every contact; a check "
+              "that does not apply on a plate is skipped with its reason.</p>\n"
+            : "";
+  html +=
+      "<p><b>Reloading</b> (static.reloading, static.reloading_beyond): loaded to z<sub>m</sub> "
+      "and unloaded to z<sub>1</sub> &lt; z<sub>m</sub>, the law reloads on its unloading "
+      "branch (as the drivers do when a plate's rebound compresses the spring again); over the "
+      "cycle z<sub>m</sub> &rarr; z<sub>1</sub> &rarr; z<sub>m</sub> it must create no energy "
+      "(the work put in on reloading at least the work returned on unloading), and at "
+      "z<sub>m</sub> it must meet its loading curve and load on along it.</p>\n";
+  return html;
+}
+
+}  // namespace
+
 fs::path write_law_report(const conformance::Report& report, const fs::path& dir,
                           const std::string& command_line) {
   create_output_directory(dir, "--report");
   const std::string body = "<h1>Contact-law conformance: " + escape(report.law) + "</h1>\n<p>" +
                            escape(report.brief()) + "</p>\n<p><small>command: <code>" +
-                           escape(command_line) + "</code></small></p>\n" +
+                           escape(command_line) + "</code></small></p>\n" + scope_html(report) +
                            law_section_html(report, "law") +
                            "<p>Machine-readable: <a href=\"results.json\">results.json</a>.</p>";
   const fs::path index = dir / "index.html";

@@ -487,9 +487,12 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
   std::string out =
       "<p>What a contact-law author gets from <code>ivv check-law</code> and the C++ "
       "conformance API (<code>verification/conformance.h</code>): static checks of the law's "
-      "equations, then dynamic checks over v<sub>0</sub> = 0.01-10 m/s with and without the "
-      "series dashpot. Each example below is judged by the cases <code>examples.*</code>; the "
-      "tables are those cases' measurements.</p>\n";
+      "equations (among them reloading: unloaded from z<sub>m</sub> to z<sub>1</sub> and "
+      "reloaded on its unloading branch, the law creates no energy over the cycle and meets its "
+      "loading curve at z<sub>m</sub>), then dynamic checks over v<sub>0</sub> = 0.01-10 m/s "
+      "with and without the series dashpot, or, on a scene with a finite plate, striking the "
+      "plate (its vibration energy in the ledger, the final e). Each example below is judged by "
+      "the cases <code>examples.*</code>; the tables are those cases' measurements.</p>\n";
   so.say("worked examples: Thornton");
   const ExampleRun& thornton = verification::thornton_example();
   out +=

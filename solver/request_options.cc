@@ -6,6 +6,7 @@
 
 #include "scene/input_error.h"
 #include "solver/choice/integrator_choice.h"
+#include "solver/plate/plate_law.h"
 #include "solver/plate/plate_run.h"
 
 namespace ivv {
@@ -25,25 +26,6 @@ void apply_scene_overrides(const RequestOptions& o, Scene& scene) {
   if (o.c) scene.damping = Damping::coefficient(*o.c);
   if (o.lambda) scene.damping = Damping::zener(*o.lambda);
   if (o.no_dashpot) scene.damping = Damping::none();
-}
-
-void apply_law(const RequestOptions& o, SimulationRequest& req) {
-  if (!o.expression.force.empty()) {
-    req.law = LawKind::expression;
-    req.expression = o.expression;
-  } else {
-    if (!o.expression.unload.empty())
-      throw InputError("--unload", "needs a loading expression (--force)");
-    req.law = parse_law(o.law);
-  }
-  req.parameters = o.parameters;
-  if (o.hc_k || o.hc_mu) {
-    if (req.law != LawKind::hunt_crossley)
-      throw InputError(o.hc_k ? "--hc-k" : "--hc-mu",
-                       "only the hunt-crossley law has K and mu (--law hunt-crossley)");
-    if (o.hc_k) req.parameters["K"] = *o.hc_k;
-    if (o.hc_mu) req.parameters["mu"] = *o.hc_mu;
-  }
 }
 
 void apply_integration(const RequestOptions& o, SimulationRequest& req) {
@@ -89,6 +71,25 @@ void naming_overrides(const RequestOptions& o, Check check) {
 
 }  // namespace
 
+void apply_law(const RequestOptions& o, SimulationRequest& req) {
+  if (!o.expression.force.empty()) {
+    req.law = LawKind::expression;
+    req.expression = o.expression;
+  } else {
+    if (!o.expression.unload.empty())
+      throw InputError("--unload", "needs a loading expression (--force)");
+    req.law = parse_law(o.law);
+  }
+  req.parameters = o.parameters;
+  if (o.hc_k || o.hc_mu) {
+    if (req.law != LawKind::hunt_crossley)
+      throw InputError(o.hc_k ? "--hc-k" : "--hc-mu",
+                       "only the hunt-crossley law has K and mu (--law hunt-crossley)");
+    if (o.hc_k) req.parameters["K"] = *o.hc_k;
+    if (o.hc_mu) req.parameters["mu"] = *o.hc_mu;
+  }
+}
+
 SimulationRequest to_request(const RequestOptions& o) {
   return to_request(load_scene(o.scene), o);
 }
@@ -123,8 +124,19 @@ SimulationRequest to_sweep_base(Scene scene, const RequestOptions& o) {
   apply_integration(o, req);
   naming_overrides(o, [&] {
     validate(req.options);
-    validate_plate_impact(req.scene, req.law, req.parameters);
+    validate_plate_law(req);
   });
+  return req;
+}
+
+SimulationRequest to_check_law_request(Scene scene, const RequestOptions& o) {
+  if (!has_finite_plate(scene)) return to_request(std::move(scene), o);
+  refuse_dashpot_and_integrator_flags(o);
+  Scene without_plate = scene;
+  without_plate.damping = Damping::none();
+  SimulationRequest req = to_request(std::move(without_plate), o);
+  apply_scene_overrides(o, scene);
+  req.scene = std::move(scene);
   return req;
 }
 

@@ -50,6 +50,10 @@ struct RequestOptions {
   std::optional<Invalid> invalid() const;
 };
 
+// The law of `options` into `request`: --law, or the expression law of --force/--unload; --param,
+// --hc-k/--hc-mu (InputError naming the flag: --unload without --force, K or mu of another law).
+void apply_law(const RequestOptions& options, SimulationRequest& request);
+
 // The checked request. `auto_integrator` is left set for --integrator auto, so that each run
 // (each point of a sweep) chooses its own; run_simulation() resolves it once for one impact.
 // Throws InputError naming the field.
@@ -58,12 +62,17 @@ SimulationRequest to_request(const RequestOptions& options);
 // options.scene is not read; the overrides of `options` apply to `scene`.
 SimulationRequest to_request(Scene scene, const RequestOptions& options);
 // The request every point of a sweep starts from: as to_request(), except that a scene with a
-// finite plate is checked as its plate runs (solver/plate/plate_impact.h: no dashpot flag, no
-// expression law, a rate-independent law) instead of refused, since a sweep runs such points on
+// finite plate is checked as its plate runs (solver/plate/plate_law.h: no dashpot flag, a
+// rate-independent law without tension) instead of refused, since a sweep runs such points on
 // the plate (solver/sweep/sweep.cc).
 SimulationRequest to_sweep_base(const RequestOptions& options);
 // The same for a scene the front end already holds (the Python module): options.scene unread.
 SimulationRequest to_sweep_base(Scene scene, const RequestOptions& options);
+// The request of a law checked on `scene` (ivv check-law, ivv.check_law): as to_request(), except
+// that a scene with a finite plate keeps it (the dynamic checks strike it,
+// verification/conformance.h); its law is then checked as to_request() checks it on the scene
+// without the plate, and the dashpot and integrator flags are refused by name.
+SimulationRequest to_check_law_request(Scene scene, const RequestOptions& options);
 // `scene` with the overrides of `options` (--v0, --zeta, --c, --lambda, --no-dashpot) applied
 // and validated on its own, without a law; InputError naming the flag of an override at fault,
 // as to_request() names it.

@@ -62,7 +62,8 @@ std::vector<ForceLoop> force_loops(const LawUnderTest& law, const Grid& grid,
 Grid default_grid(const Scene& scene) {
   Grid g;
   g.scene = scene;
-  if (!scene.yield_strength) g.zetas = {0.0};  // zeta is not defined without yield
+  if (!scene.yield_strength || has_finite_plate(scene)) g.zetas = {0.0};  // zeta undefined
+  if (has_finite_plate(scene)) return g;  // the plate's modes are its damping: no dashpot
   switch (scene.damping.kind) {
     case Damping::Kind::none:
       break;
@@ -95,6 +96,23 @@ void require_cor_claim_in_range(const Claims& claims, const std::vector<double>&
                                          " m/s; a COR is a finite number in [0, 1]");
   }
 }
+// On a finite plate: the plate's runs, then the static checks (on the law, the scene without the
+// plate) and the plate's dynamic checks (conformance_plate.cc).
+ConformanceResult plate_conformance(const LawUnderTest& law, const Claims& claims, const Grid& grid,
+                                    ConformanceResult& result) {
+  const detail::PlateGrid runs = detail::run_plate_grid(law, grid);
+  const double v_hi = grid.velocities.back();
+  double z_scan = 2.0 * detail::hertz_scales(grid.scene, v_hi).z;
+  for (const detail::PlatePoint& p : runs.points)
+    if (p.reference.ok && std::isfinite(p.reference.z_max))
+      z_scan = std::max(z_scan, 1.25 * p.reference.z_max);
+  const Scene rigid = detail::at(grid.scene, v_hi, Damping::none());
+  detail::static_checks(law, rigid, v_hi, z_scan, result);
+  detail::reloading_checks(law, rigid, v_hi, result);
+  detail::plate_dynamic_checks(law, claims, grid, runs, result);
+  return result;
+}
+
 }  // namespace
 
 ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims,
@@ -119,6 +137,13 @@ ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims,
   ConformanceResult result;
   result.law = law.name;
   result.description = law.description;
+  if (has_finite_plate(grid.scene)) {
+    if (!grid.dashpots.empty() || grid.zetas != std::vector<double>{0.0})
+      throw InputError(grid.dashpots.empty() ? "--zeta" : "--c",
+                       "not used with a finite plate (its modes carry the energy away; without "
+                       "length_x/length_y the plate is infinite and has the dashpot)");
+    return plate_conformance(law, claims, grid, result);
+  }
   const std::vector<detail::Run> runs = detail::run_grid(law, grid);
   // the scan goes beyond the largest z_m of the grid (and at least to 2 z_ref)
   const double v_hi = grid.velocities.back();
@@ -127,6 +152,7 @@ ConformanceResult run_conformance(const LawUnderTest& law, const Claims& claims,
     if (r.reference.ok() && std::isfinite(r.reference.z_max))
       z_scan = std::max(z_scan, 1.25 * r.reference.z_max);
   detail::static_checks(law, detail::at(grid.scene, v_hi, Damping::none()), v_hi, z_scan, result);
+  detail::reloading_checks(law, detail::at(grid.scene, v_hi, Damping::none()), v_hi, result);
   detail::dynamic_checks(law, claims, grid, runs, result);
   result.loops = force_loops(law, grid, runs);
   return result;

@@ -30,12 +30,27 @@
 //                           (Boost.Math autodiff) for laws templated on the scalar; not
 //                           applicable to expression laws (their stiffness is a difference)
 //   static.stored_energy    `stored_energy` = the integral of the unloading force (Gauss-Kronrod)
+//   static.reloading        a cycle z_m -> z1 -> z_m below z_m creates no energy: unloading to
+//                           z1 (zdot < 0), then reloading on the same unloading branch (zdot > 0,
+//                           as the drivers do: a finite plate reloads the spring within one
+//                           contact), the work put in on reloading is at least the work returned
+//                           on unloading (1e-10 F_ref z_ref: the quadratures' error); a law whose
+//                           reloading is softer than its unloading creates energy and fails
+//   static.reloading_beyond reloading meets the loading curve at z_m without a jump, and beyond
+//                           z_m loads on the first-loading curve (the history of z_m restored)
 // Dynamic checks, over v0 (at least three decades) x damping (none and a dashpot, for laws
 // independent of the rate), with the tightest reference available. A run that fails because
 // the law is not defined there (LawDomainError, e.g. the linearized law below z_m = 2.25 z_y)
 // in the reference and in every integrator alike is outside the law's domain: it is counted
 // and named in the details, not judged; a law defined nowhere on the grid fails.
 // A check that does not apply to the law, or a claim not made, is skipped with its reason.
+// On a scene with a finite plate ([structure] length_x, length_y) the static checks run on the law
+// as above, and the dynamic ones on the plate, by its own driver, at each grid velocity without a
+// dashpot (verification/conformance_plate.cc): dynamic.energy (the ledger with the plate's
+// vibration energy), dynamic.impulse (int F dt = m (v0 - alpha'_final)), dynamic.cor_range and
+// dynamic.expected_cor on the final e, dynamic.integrators (the plate's two steppers against a
+// tight reference); the COR definitions, the trends and the low-speed and capture claims are
+// skipped with their reasons, and so is every dynamic check for a law the plate does not model.
 //   dynamic.energy          the energy ledger closes
 //   dynamic.cor_range       0 <= e <= 1
 //   dynamic.cor_definitions Newton, Poisson and energetic CORs agree
@@ -69,6 +84,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "solver/plate/plate_impact.h"
 #include "solver/simulate.h"
 #include "verification/plot_data.h"
 
@@ -104,6 +120,10 @@ struct LawUnderTest {
   bool runs_in_reference = true;  // templated on its scalar: mp50 can run it
   std::function<std::unique_ptr<LawProbe>(const Scene&)> probe;
   std::function<ImpactResult(const Scene&, IntegratorKind, const IntegratorOptions&)> simulate;
+  // One impact on the scene's finite plate (solver/plate/plate_impact.h); empty when the law
+  // cannot run on one. Throws InputError, with the reason, for a law the plate does not model
+  // (rate-dependent, or with tension: solver/plate/plate_law.h).
+  std::function<PlateImpactResult(const Scene&, const PlateImpactOptions&)> simulate_plate;
   // One impact's trajectory (for the force-deformation loops of the result); may be empty.
   std::function<std::vector<TrajectoryPoint>(const Scene&, const IntegratorOptions&)> trajectory;
 };
@@ -198,7 +218,9 @@ struct CorPoint {
   std::optional<double> e_bound;                       // captured: the true e lies in [0, e_bound]
   std::optional<double> expected;                      // the claimed COR, when claimed
   std::string status;                                  // separated, captured, or the failure reason
-  std::string damping_label() const;  // "no dashpot", "zeta = 0.1", "c = 500 N s/m"
+  bool finite_plate = false;  // the scene's finite plate struck (e: the final COR)
+  // "no dashpot", "zeta = 0.1", "c = 500 N s/m", "finite plate"
+  std::string damping_label() const;
 };
 
 // One force-deformation loop of the reference run (plotted per law: a loop that encloses a

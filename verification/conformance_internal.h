@@ -1,8 +1,10 @@
 // Shared by the units of the conformance checks (not installed, not for law authors):
 //   conformance_static.cc    the static checks (the law's equations, no integrator)
+//   conformance_reloading.cc the static checks of reloading below z_m
 //   conformance_dynamic.cc   the grid of impacts and the dynamic checks judged on it
 //   conformance_result.cc    the result reporting itself (brief, full, plots, JSON)
 //   conformance_registry.cc  the built-in and expression laws of the registry as laws under test
+//   conformance_plate.cc     the dynamic checks on a finite plate
 //   conformance.cc           run_conformance: the grid completed, then the checks in order
 #pragma once
 
@@ -107,9 +109,32 @@ class Rechecks {
 void static_checks(const LawUnderTest& law, const Scene& scene, double v_hi, double z_scan,
                    ConformanceResult& result);
 
+// The reloading checks on the same scene (conformance_reloading.cc): a cycle z_m -> z1 -> z_m
+// below z_m creates no energy, and reloading meets the loading curve at z_m.
+void reloading_checks(const LawUnderTest& law, const Scene& scene, double v_hi,
+                      ConformanceResult& result);
+
 // The dynamic checks judged on the runs, in order.
 void dynamic_checks(const LawUnderTest& law, const Claims& claims, const Grid& grid,
                     const std::vector<Run>& runs, ConformanceResult& result);
+
+// On a finite plate (conformance_plate.cc): one velocity's runs of the plate driver.
+struct PlatePoint {
+  double v0 = 0;                  // [m/s]
+  PlateImpactResult reference;    // dop853 at rtol 1e-12, atol 1e-14
+  PlateImpactResult run, second;  // dop853 and odeint-dopri5 at the grid's tolerances (the
+                                  // force recorded for the impulse)
+  double truncation_error = 0;    // |e - e(cut-off/2)|/7 of `run` (0 when unknown)
+};
+struct PlateGrid {
+  std::vector<PlatePoint> points;
+  std::string refused;  // why the law does not run on the plate (empty: it runs)
+};
+Scene at_velocity(const Scene& base, double v0);
+PlateGrid run_plate_grid(const LawUnderTest& law, const Grid& grid);
+// The dynamic checks on the plate, and the ones that do not apply skipped with their reasons.
+void plate_dynamic_checks(const LawUnderTest& law, const Claims& claims, const Grid& grid,
+                          const PlateGrid& runs, ConformanceResult& result);
 
 // "dp45 at v0 = 0.0001 m/s, no dashpot"
 std::string run_label(const Run& r, std::string_view who);

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "solver/laws/law_registry.h"
+#include "solver/plate/plate_law.h"
 #include "solver/simulate_law.h"
 #include "verification/conformance.h"
 #include "verification/conformance_law.h"
@@ -58,6 +59,11 @@ LawUnderTest registry_law(const SimulationRequest& request) {
     r.model = ModelKind::full;  // the law integrated: the checks judge the integrators on it
     r.options = o;
     return ivv::simulate(r);
+  };
+  t.simulate_plate = [base](const Scene& s, const PlateImpactOptions& o) {
+    SimulationRequest r = base;
+    r.scene = s;
+    return simulate_plate_law(r, o);
   };
   t.trajectory = [base](const Scene& s, const IntegratorOptions& o) {
     SimulationRequest r = base;

@@ -48,6 +48,7 @@ std::string Check::line() const {
 }
 
 std::string CorPoint::damping_label() const {
+  if (finite_plate) return "finite plate";
   if (std::isinf(c)) return "no dashpot";
   if (std::isfinite(zeta)) return "zeta = " + fmt(zeta);
   return "c = " + fmt(c) + " N s/m";

@@ -398,6 +398,19 @@ def test_check_law_equals_the_cli_json():
     assert all({"id", "passed", "why"} <= set(c) for c in v.checks)
 
 
+def test_an_expression_law_on_a_finite_plate_as_the_cli_runs_it():
+    plate = "steel-ball-on-finite-steel-plate"
+    r = ivv.simulate(plate, force="K_h*z^1.5")
+    assert as_printed(r.to_dict()) == cli_json("simulate", "--scene", plate,
+                                               "--force", "K_h*z^1.5")
+    assert r.ok and abs(r.e - ivv.simulate(plate, law="hertz").e) < 1e-7
+    v = ivv.check_law(force="K_h*z^1.5", scene=plate, v0=[1])
+    assert v.passed, v.failed()
+    assert {"dynamic.energy", "dynamic.impulse", "static.reloading"} <= {c["id"] for c in v.checks}
+    with pytest.raises(ivv.InputError, match="--zeta"):
+        ivv.check_law(force="K_h*z^1.5", scene=plate, v0=[1], zeta=[0.1])
+
+
 def test_check_law_needs_a_law():
     with pytest.raises(ivv.InputError) as caught:
         ivv.check_law()

@@ -1,4 +1,5 @@
 #include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_truncation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,65 +107,16 @@ PlateImpactResult run_plate(const Law& law, const PlateSetup& setup, const Deriv
   return out;
 }
 
-// The refusal of a cut-off that keeps more than max_modes modes (plate_impact.h).
-void require_mode_count(const PlateSetup& setup, const PlateImpactOptions& opt, double cutoff,
-                        double estimate) {
-  const std::size_t n = count_plate_modes(setup.plate, cutoff * setup.omega_s);
-  if (n <= opt.max_modes) return;
-  const std::string with_fewer =
-      std::isnan(estimate) ? "" : "; the error with fewer is estimated " + fmt(estimate, 3);
-  throw InputError("structure", "the truncation tolerance " + fmt(opt.truncation_tol, 3) +
-                                    " in e needs about " + std::to_string(n) + " modes (cut-off " +
-                                    fmt(cutoff, 4) + with_fewer + "), more than the limit of " +
-                                    std::to_string(opt.max_modes) +
-                                    ": the plate is large against the contact, so the infinite "
-                                    "plate (remove length_x, length_y) may be the model wanted");
-}
-
-// The cut-off chosen for options.truncation_tol by the rule of the header.
-template <class Law>
-PlateImpactResult run_to_tolerance(const Law& law, const PlateSetup& setup,
-                                   const DerivedParameters& p, const PlateImpactOptions& opt) {
-  double c_prev = 0.5 * opt.cutoff, c = opt.cutoff;
-  PlateImpactResult coarse = run_plate(law, setup, p, opt, c_prev);
-  if (!coarse.ok) return coarse;
-  int runs = 1;
-  for (int refinement = 0;; ++refinement) {
-    PlateImpactResult fine = run_plate(law, setup, p, opt, c);
-    fine.cutoff_runs = ++runs;
-    if (!fine.ok) return fine;
-    const double est = kTruncationSafety * std::abs(fine.e - coarse.e) /
-                       (std::pow(c / c_prev, kTruncationOrder) - 1.0);
-    fine.truncation_error = est;
-    fine.cutoff_coarser = c_prev;
-    fine.e_coarser = coarse.e;
-    if (est <= opt.truncation_tol) return fine;
-    if (refinement == kMaxCutoffRefinements) {
-      fine.ok = false;
-      fine.reason = "the truncation estimate " + fmt(est, 3) + " at cut-off " + fmt(c, 4) +
-                    " is still above the tolerance " + fmt(opt.truncation_tol, 3) + " after " +
-                    std::to_string(kMaxCutoffRefinements) + " refinements";
-      return fine;
-    }
-    const double grow =
-        std::max(1.25, 1.2 * std::pow(est / opt.truncation_tol, 1.0 / kTruncationOrder));
-    require_mode_count(setup, opt, c * grow, est);
-    c_prev = c;
-    c *= grow;
-    coarse = std::move(fine);
-  }
-}
-
 template <class Law>
 PlateImpactResult run_plate(const Law& law, const Scene& scene, const DerivedParameters& p,
                             const PlateImpactOptions& opt) {
   if (!(opt.truncation_tol >= 0.0 && std::isfinite(opt.truncation_tol)))
     throw std::invalid_argument("PlateImpactOptions::truncation_tol must be finite and >= 0");
   const PlateSetup setup = plate_setup<Law>(scene, p);
-  if (opt.truncation_tol > 0.0 && opt.cutoff > 0.0) {
-    require_mode_count(setup, opt, opt.cutoff, PlateImpactResult::nan);
-    return run_to_tolerance(law, setup, p, opt);
-  }
+  if (opt.truncation_tol > 0.0 && opt.cutoff > 0.0)
+    return run_to_truncation_tolerance(
+        opt, [&](double c) { return run_plate(law, setup, p, opt, c); },
+        [&](double c) { return count_plate_modes(setup.plate, c * setup.omega_s); });
   return run_plate(law, setup, p, opt, opt.cutoff);
 }
 

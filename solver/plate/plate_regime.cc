@@ -5,6 +5,7 @@
 
 #include "scene/input_error.h"
 #include "solver/format.h"
+#include "solver/plate/plate_law.h"
 #include "solver/plate/plate_modes.h"
 #include "solver/request_options.h"
 #include "solver/simulate.h"
@@ -25,6 +26,7 @@ PlateModelOutcome run_ode_model(PlateModel model, Scene scene, const PlateImpact
   req.scene = std::move(scene);
   req.law = run.law;
   req.parameters = run.parameters;
+  if (run.expression) req.expression = *run.expression;
   req.auto_integrator = true;
   req.model = ModelKind::automatic;
   req.options.rtol = run.options.rtol;
@@ -60,8 +62,12 @@ PlateModelOutcome outcome_of(PlateModel model, const PlateImpactResult& r) {
 PlateModelOutcome run_quasi_static(const PlateImpactSpec& run) {
   PlateImpactOptions opt = run.options;
   opt.cutoff = 0.0;
-  return outcome_of(PlateModel::quasi_static,
-                    simulate_plate_impact(run.scene, run.law, run.parameters, opt));
+  SimulationRequest law;
+  law.scene = run.scene;
+  law.law = run.law;
+  law.parameters = run.parameters;
+  if (run.expression) law.expression = *run.expression;
+  return outcome_of(PlateModel::quasi_static, simulate_plate_law(law, opt));
 }
 
 void measure_against(PlateModelOutcome& m, const PlateImpactResult& full) {

@@ -50,6 +50,7 @@
 #include <string_view>
 #include <vector>
 
+#include "solver/laws/expression.h"
 #include "solver/plate/plate_impact.h"
 
 namespace ivv {
@@ -116,7 +117,8 @@ struct PlateImpactSpec {
   const Scene& scene;
   LawKind law;
   const LawParameters& parameters;
-  const PlateImpactOptions& options;  // rtol, atol for every model
+  const PlateImpactOptions& options;              // rtol, atol for every model
+  const ExpressionLawSpec* expression = nullptr;  // law == expression: the typed law
 };
 
 // Runs the three cheaper models of the spec, measures each against `full` (the full plate's

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "scene/input_error.h"
+#include "solver/plate/plate_law.h"
 
 namespace ivv {
 namespace {
@@ -27,8 +28,6 @@ void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
   refuse_for_plate(o.integrator != "auto", "--integrator", own);
   refuse_for_plate(o.dt.has_value(), "--dt", own);
   refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);
-  refuse_for_plate(!o.expression.force.empty(), "--force",
-                   "an expression law is not modelled on a finite plate yet");
 }
 
 PlateModel PlateRun::answered() const {
@@ -38,6 +37,15 @@ PlateModel PlateRun::answered() const {
 
 const PlateModelOutcome* PlateRun::answer() const {
   return regime ? &regime->outcome(answered()) : nullptr;
+}
+
+SimulationRequest PlateRun::law_request() const {
+  SimulationRequest r;
+  r.scene = scene;
+  r.law = law;
+  r.parameters = parameters;
+  r.expression = expression;
+  return r;
 }
 
 double PlateRun::estimated_error() const {
@@ -63,8 +71,11 @@ PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
     require(std::isfinite(*o.v0) && *o.v0 > 0.0, "--v0", "a finite number > 0 m/s", *o.v0);
     run.scene.velocity = *o.v0;
   }
-  run.law = parse_law(o.law);
-  run.parameters = o.parameters;
+  SimulationRequest law;
+  apply_law(o, law);
+  run.law = law.law;
+  run.parameters = std::move(law.parameters);
+  run.expression = std::move(law.expression);
   if (o.rtol) run.options.rtol = *o.rtol;
   if (o.atol) run.options.atol = *o.atol;
   require(run.options.rtol > 0.0 && run.options.rtol < 1.0, "--rtol", "a number in (0, 1)",
@@ -73,12 +84,13 @@ PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
           run.options.atol);
   run.options.truncation_tol = kPlateTruncationTol;
   run.options.cutoff = kPlateFirstCutoff;
-  run.result = simulate_plate_impact(run.scene, run.law, run.parameters, run.options);
+  const SimulationRequest request = run.law_request();
+  run.result = simulate_plate_law(request, run.options);
   if (!run.result.ok) return run;
   run.e_half_cutoff = run.result.e_coarser;
   run.truncation_error = run.result.truncation_error;
-  run.regime =
-      plate_regime({run.scene, run.law, run.parameters, run.options}, run.result, tolerance);
+  run.regime = plate_regime({run.scene, run.law, run.parameters, run.options, &run.expression},
+                            run.result, tolerance);
   return run;
 }
 

@@ -2,11 +2,13 @@
 // length_x and length_y): the full plate (plate_impact.h), its truncation error, and the model
 // the impact needs (plate_regime.h).
 //
-// From RequestOptions: the scene with --v0, the law (--law, --param), --rtol/--atol for every
+// From RequestOptions: the scene with --v0, the law (--law, or an expression law's --force and
+// --unload; --param), --rtol/--atol for every
 // model's integration, --model (auto, full, half-space, infinite-plate, quasi-static) and
 // --model-tol. Flags that describe a dashpot (--zeta, --c, --lambda, --no-dashpot), an
-// integrator other than auto, --dt, --max-steps and an expression law are refused by name
-// (InputError): a finite plate has no dashpot and runs its own integration.
+// integrator other than auto, --dt and --max-steps are refused by name (InputError): a finite
+// plate has no dashpot and runs its own integration. A law the plate does not model (rate-
+// dependent, or with tension) is refused by name too (solver/plate/plate_law.h).
 //
 // Every run integrates the full plate (the reference of the choice) and the three cheaper
 // models, and answers with
@@ -34,6 +36,7 @@ struct PlateRun {
   Scene scene;
   LawKind law = LawKind::elastoplastic;
   LawParameters parameters;
+  ExpressionLawSpec expression;  // law == expression: the typed law
   PlateImpactOptions options;
   PlateImpactResult result;           // the full plate
   double e_half_cutoff = nan;         // e at the coarser cut-off of the rule's last pair
@@ -47,6 +50,8 @@ struct PlateRun {
   const PlateModelOutcome* answer() const;  // nullptr when the regime was not measured
   // |answer - full| + truncation_error (NaN when unknown).
   double estimated_error() const;
+  // The law as a request: scene, law, parameters and expression (for the law's JSON and runs).
+  SimulationRequest law_request() const;
 };
 
 PlateRun run_plate_simulation(const RequestOptions& options);

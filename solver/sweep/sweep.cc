@@ -7,7 +7,7 @@
 
 #include "solver/format.h"
 #include "solver/parallel.h"
-#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_law.h"
 
 namespace ivv {
 namespace {
@@ -34,7 +34,7 @@ ImpactResult simulate_plate_point(const SimulationRequest& point) {
   PlateImpactOptions opt;
   opt.rtol = point.options.rtol;
   opt.atol = point.options.atol;
-  return as_sweep_result(simulate_plate_impact(point.scene, point.law, point.parameters, opt));
+  return as_sweep_result(simulate_plate_law(point, opt));
 }
 
 ImpactResult simulate_point(const SweepRequest& req, std::size_t index, const PointInputs& in) {

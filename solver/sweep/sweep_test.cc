@@ -604,7 +604,14 @@ TEST(SweepFinitePlate, DashpotAndIntegratorFlagsAreBadInput) {
   EXPECT_THROW(to_sweep_base(o), InputError);
   o.integrator = "auto";
   o.expression.force = "K_h*z^1.5";
-  EXPECT_THROW(to_sweep_base(o), InputError);
+  EXPECT_NO_THROW(to_sweep_base(o));           // an expression law runs on the plate
+  o.expression.force = "K_h*z^1.5 + 10*zdot";  // a rate-dependent one does not: named
+  try {
+    to_sweep_base(o);
+    ADD_FAILURE() << "a rate-dependent expression law accepted on a finite plate";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "--force");
+  }
 }
 
 }  // namespace

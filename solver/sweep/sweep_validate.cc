@@ -12,7 +12,7 @@
 #include "scene/scene_values.h"
 #include "solver/format.h"
 #include "solver/parallel.h"
-#include "solver/plate/plate_impact.h"
+#include "solver/plate/plate_law.h"
 
 namespace ivv {
 
@@ -43,16 +43,14 @@ std::string flag_of(const SweepRequest& req, const std::string& field) {
 }
 
 // A point on a finite plate: the plate's checks (solver/plate/plate_impact.h), its tolerances,
-// and no integrator or expression law it would ignore (its modes run on dop853).
+// and no integrator it would ignore (its modes run on dop853).
 void validate_finite_plate_point(const SimulationRequest& r) {
   if (!r.auto_integrator)
     throw InputError("--integrator",
                      "not used with a finite plate (the plate's modes are integrated by dop853 "
                      "with event location); leave it auto");
-  if (!r.expression.force.empty())
-    throw InputError("--force", "an expression law is not modelled on a finite plate yet");
   validate(r.options);
-  validate_plate_impact(r.scene, r.law, r.parameters);
+  validate_plate_law(r);
 }
 
 // Validates point `r` of the sweep, naming a field of the scene that the sweep sets by the flag
