@@ -53,6 +53,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scene ${PROJECT_SOURCE_DIR}/closed_forms
         FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_SOURCE_DIR}/verification/conformance.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_law.h
+              ${PROJECT_SOURCE_DIR}/verification/conformance_plate_law.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_gtest.h
               ${PROJECT_SOURCE_DIR}/verification/continuity_scan.h
               ${PROJECT_SOURCE_DIR}/verification/plot_data.h

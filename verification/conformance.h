@@ -121,8 +121,9 @@ struct LawUnderTest {
   std::function<std::unique_ptr<LawProbe>(const Scene&)> probe;
   std::function<ImpactResult(const Scene&, IntegratorKind, const IntegratorOptions&)> simulate;
   // One impact on the scene's finite plate (solver/plate/plate_impact.h); empty when the law
-  // cannot run on one. Throws InputError, with the reason, for a law the plate does not model
-  // (rate-dependent, or with tension: solver/plate/plate_law.h).
+  // cannot run on one (a C++ law gets it from law_under_test_on_plate, conformance_plate_law.h).
+  // Throws InputError, with the reason, for a law the plate does not model (rate-dependent, or with
+  // tension: solver/plate/plate_law.h).
   std::function<PlateImpactResult(const Scene&, const PlateImpactOptions&)> simulate_plate;
   // One impact's trajectory (for the force-deformation loops of the result); may be empty.
   std::function<std::vector<TrajectoryPoint>(const Scene&, const IntegratorOptions&)> trajectory;

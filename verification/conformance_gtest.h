@@ -36,11 +36,12 @@ struct Subject {
 // Every check id run_conformance can produce.
 inline const std::vector<std::string>& all_check_ids() {
   static const std::vector<std::string> ids = {
-      "static.onset",           "static.attractive",    "static.loading_monotone",
-      "static.breakpoints",     "static.continuity",    "static.unloading_switch",
-      "static.unloading_below", "static.stored_energy", "static.stiffness",
-      "dynamic.energy",         "dynamic.cor_range",    "dynamic.cor_definitions",
-      "dynamic.integrators",    "dynamic.monotone_v0",  "dynamic.monotone_damping",
+      "static.onset",           "static.attractive",       "static.loading_monotone",
+      "static.breakpoints",     "static.continuity",       "static.unloading_switch",
+      "static.unloading_below", "static.stored_energy",    "static.stiffness",
+      "static.reloading",       "static.reloading_beyond", "dynamic.energy",
+      "dynamic.cor_range",      "dynamic.cor_definitions", "dynamic.impulse",
+      "dynamic.integrators",    "dynamic.monotone_v0",     "dynamic.monotone_damping",
       "dynamic.low_speed",      "dynamic.expected_cor"};
   return ids;
 }

@@ -14,7 +14,6 @@
 #include <string>
 #include <utility>
 
-#include "solver/plate/plate_law_impact.h"
 #include "solver/simulate_law.h"
 #include "verification/conformance.h"
 
@@ -90,10 +89,6 @@ LawUnderTest law_under_test(std::string name, std::string description, MakeLaw m
   t.simulate = [make_law](const Scene& s, IntegratorKind k, const IntegratorOptions& o) {
     return ivv::simulate(make_law(s), s, k, o);
   };
-  if constexpr (!Law::rate_dependent)
-    t.simulate_plate = [make_law](const Scene& s, const PlateImpactOptions& o) {
-      return simulate_plate_impact_of(make_law(s), s, o);
-    };
   t.trajectory = [make_law](const Scene& s, const IntegratorOptions& o) {
     std::vector<TrajectoryPoint> points;
     ivv::simulate(make_law(s), s, IntegratorKind::dp45, o, &points);

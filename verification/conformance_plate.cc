@@ -111,7 +111,7 @@ class PlateChecks {
     if (!runs_.refused.empty()) {
       for (const char* id : {"dynamic.energy", "dynamic.impulse", "dynamic.cor_range",
                              "dynamic.integrators", "dynamic.expected_cor"})
-        result_.skipped.push_back({id, "the law does not run on a finite plate: " + runs_.refused});
+        result_.skipped.push_back({id, "not run on the finite plate: " + runs_.refused});
       skip_the_rest();
       return;
     }
