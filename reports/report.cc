@@ -330,7 +330,7 @@ std::string case_rows(const CaseRecord& r, FigureBook& book) {
   std::string detail = "<p>" + escape(o.detail) + "</p><p>" + escape(comparison_text(o)) +
                        "; run time " + number(r.seconds, 3) + " s.</p>\n";
   for (std::size_t i = 0; i < o.plots.size(); ++i) {
-    Figure f{.plot = o.plots[i], .source = Source::from_cases({r.c->id})};
+    Figure f{.plot = o.plots[i], .caption = "", .source = Source::from_cases({r.c->id})};
     f.plot.id = r.c->id + "." + (f.plot.id.empty() ? "plot" + std::to_string(i) : f.plot.id);
     detail += book.add(std::move(f));
   }

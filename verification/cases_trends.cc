@@ -478,7 +478,8 @@ Outcome thornton_same_exponent() {
             .x_label = "v0 / v_y",
             .y_label = "e",
             .log_x = true,
-            .log_y = true};
+            .log_y = true,
+            .series = {}};
   plot.series.push_back({"elastoplastic model (no dashpot)", all, model, Series::Style::lines});
   plot.series.push_back({"Thornton 1997", all, thornton, Series::Style::dashed});
   o.plots.push_back(plot);

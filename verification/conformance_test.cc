@@ -303,7 +303,9 @@ TEST(Conformance, AStiffDashpotEndsWithAVerdictAndTheExplicitStopsAsNotes) {
     stiff += n.detail.find("needs an implicit integrator") != std::string::npos;
   EXPECT_GT(stiff, 0) << r.full();
   for (const CorPoint& p : r.cor) {
-    if (p.c == 1e-6) EXPECT_EQ(p.status, "captured") << p.v0;
+    if (p.c == 1e-6) {
+      EXPECT_EQ(p.status, "captured") << p.v0;
+    }
   }
 }
 
