@@ -311,10 +311,8 @@ std::vector<Figure> paper_figures(const SectionOptions& options) {
       "drawn) and with v<sub>0</sub> above yield (case "
       "<code>trend.cor-falls-with-v0</code>, on its own grid).";
   if (failed > 0) caption += " " + std::to_string(failed) + " points failed and are not drawn.";
-  out.push_back({.plot = p,
-                 .caption = caption,
-                 .full_width = true,
-                 .source = Source::from_cases({"trend.paper.fig14-cor-falls-with-zeta"})});
+  const Source fig14 = Source::from_cases({"trend.paper.fig14-cor-falls-with-zeta"});
+  out.push_back({.plot = p, .caption = caption, .full_width = true, .source = fig14});
   return out;
 }
 

@@ -34,6 +34,9 @@ ImpactResult simulate_plate_point(const SimulationRequest& point) {
   PlateImpactOptions opt;
   opt.rtol = point.options.rtol;
   opt.atol = point.options.atol;
+  // the mode cut-off chosen for the truncation tolerance `simulate` states (plate_impact.h)
+  opt.truncation_tol = kPlateTruncationTol;
+  opt.cutoff = kPlateFirstCutoff;
   return as_sweep_result(simulate_plate_law(point, opt));
 }
 

@@ -583,7 +583,11 @@ TEST(SweepFinitePlate, EachRowIsThePlatesRunAtThatPoint) {
   ASSERT_EQ(points.size(), 4u);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const SimulationRequest r = point_request(req, i);
-    const PlateImpactResult plate = simulate_plate_impact(r.scene, r.law, r.parameters, {});
+    PlateImpactOptions opt;  // as ivv simulate: the cut-off chosen for its truncation tolerance
+    opt.truncation_tol = kPlateTruncationTol;
+    opt.cutoff = kPlateFirstCutoff;
+    const PlateImpactResult plate = simulate_plate_impact(r.scene, r.law, r.parameters, opt);
+    EXPECT_LE(plate.truncation_error, kPlateTruncationTol) << i;
     ASSERT_TRUE(plate.ok) << plate.reason;
     EXPECT_EQ(points[i].result.e, plate.e) << i;  // same run, same bits
     EXPECT_EQ(points[i].result.F_max, plate.F_max) << i;
