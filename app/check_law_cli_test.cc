@@ -98,6 +98,9 @@ TEST(CheckLaw, ReportWritesASelfContainedPage) {
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(html.find("static.onset"), std::string::npos);
   EXPECT_NE(html.find("<svg"), std::string::npos);
+  // the command line as typed, quotes included (HTML-escaped; a browser shows ' and a copy of it
+  // pastes back into a shell)
+  EXPECT_NE(html.find("check-law --force &#39;K_h*z^1.5&#39; --report"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "results.json"));
   fs::remove_all(dir);
 }

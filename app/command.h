@@ -38,7 +38,7 @@ inline CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::s
 struct Invocation {
   int argc = 0;
   char** argv = nullptr;
-  std::string command_line;  // argv joined by spaces
+  std::string command_line;  // argv, each argument shell-quoted where needed (app/shell_quote.h)
 };
 
 class Command {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/command.h"
+#include "app/shell_quote.h"
 #include "scene/input_error.h"
 
 int main(int argc, char** argv) {
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
   }
 
   Invocation invocation{argc, argv, {}};
-  for (int i = 0; i < argc; ++i) invocation.command_line += (i ? " " : "") + std::string(argv[i]);
+  invocation.command_line = ivv::app::shell_command_line(argc, argv);  // pastes back into a shell
   try {
     for (const auto& command : commands)
       if (command->cli()) return command->run(invocation);
