@@ -42,7 +42,8 @@ inline const std::vector<std::string>& all_check_ids() {
       "static.reloading",       "static.reloading_beyond", "dynamic.energy",
       "dynamic.cor_range",      "dynamic.cor_definitions", "dynamic.impulse",
       "dynamic.integrators",    "dynamic.monotone_v0",     "dynamic.monotone_damping",
-      "dynamic.low_speed",      "dynamic.expected_cor"};
+      "dynamic.low_speed",      "dynamic.expected_cor",    "dynamic.increasing_v0",
+      "dynamic.captured_below"};
   return ids;
 }
 

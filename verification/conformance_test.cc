@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -45,6 +46,13 @@ TEST(Conformance, TheHertzLawPassesEveryCheck) {
   EXPECT_NO_THROW(check(r, "static.stiffness"));
   EXPECT_NE(check(r, "dynamic.integrators").detail.find("mp50"), std::string::npos);
   EXPECT_NEAR(check(r, "dynamic.expected_cor").measured, 0.0, 1e-7);
+  // every check the battery runs or skips is one the downstream GoogleTest suite asserts
+  const std::vector<std::string>& ids = ::ivv::conformance::testing::all_check_ids();
+  const auto listed = [&](const std::string& id) {
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+  };
+  for (const Check& c : r.checks) EXPECT_TRUE(listed(c.id)) << c.id;
+  for (const Skipped& s : r.skipped) EXPECT_TRUE(listed(s.id)) << s.id;
 }
 
 // A claimed COR of 0/0 passed "at no separated run"; sqrt(-1) the same.
