@@ -311,9 +311,9 @@ class ReportInBrowser : public ::testing::Test {
   }
   void SetUp() override {
     if (chromium_path().empty())
-      GTEST_SKIP() << "no Chromium found at configure time (IVV_CHROMIUM=\"" << IVV_CHROMIUM
-                   << "\"; scripts/install-deps.sh installs it): the report's rendering is not "
-                      "checked";
+      GTEST_FAIL() << "no Chromium found at configure time (IVV_CHROMIUM=\"" << IVV_CHROMIUM
+                   << "\"): scripts/install-deps.sh installs it (make deps), and without it the "
+                      "report's rendering would go unchecked";
   }
   void TearDown() override { kept_ = kept_ || HasFailure(); }
 

@@ -82,7 +82,7 @@ PlateImpactResult run_plate(const Law& law, const PlateSetup& setup, const Deriv
   out.static_compliance = modes.static_compliance.value;
   out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
   out.plate_mass = setup.plate.mass();
-  try {
+  catching_plate_failures(out, [&] {
     if constexpr (!Law::rate_dependent) {
       using System = PlateSystem<Law>;
       if (opt.stepper == PlateImpactOptions::Stepper::dop853) {
@@ -94,16 +94,7 @@ PlateImpactResult run_plate(const Law& law, const PlateSetup& setup, const Deriv
         driver.run(out);
       }
     }
-  } catch (const PlateRunFailure& f) {
-    out.ok = false;
-    out.reason = f.reason;
-  } catch (const EventLocationError& e) {
-    out.ok = false;
-    out.reason = e.what();
-  } catch (const LawDomainError& e) {
-    out.ok = false;
-    out.reason = e.what();
-  }
+  });
   return out;
 }
 

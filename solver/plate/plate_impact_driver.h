@@ -42,6 +42,24 @@ struct PlateRunFailure {
   std::string reason;
 };
 
+// Runs `run`; a named failure of a plate run (PlateRunFailure, an event not located, a law
+// outside its domain) becomes out.ok = false with its reason. Anything else propagates.
+template <class Run>
+void catching_plate_failures(PlateImpactResult& out, Run run) {
+  try {
+    run();
+  } catch (const PlateRunFailure& f) {
+    out.ok = false;
+    out.reason = f.reason;
+  } catch (const EventLocationError& e) {
+    out.ok = false;
+    out.reason = e.what();
+  } catch (const LawDomainError& e) {
+    out.ok = false;
+    out.reason = e.what();
+  }
+}
+
 template <class Law, class Stepper>
 class PlateImpactDriver {
  public:

@@ -155,7 +155,7 @@ PlateImpactResult detail::plate_impact_at_cutoff(const Law& law, const Scene& sc
   out.static_compliance = modes.static_compliance.value;
   out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
   out.plate_mass = plate.mass();
-  try {
+  catching_plate_failures(out, [&] {
     if constexpr (!Law::rate_dependent) {
       using System = PlateSystem<Law>;
       if (opt.stepper == PlateImpactOptions::Stepper::dop853)
@@ -166,16 +166,7 @@ PlateImpactResult detail::plate_impact_at_cutoff(const Law& law, const Scene& sc
             .run(out);
     }
     detail::close_plate_ledger(law, out);
-  } catch (const PlateRunFailure& f) {
-    out.ok = false;
-    out.reason = f.reason;
-  } catch (const EventLocationError& e) {
-    out.ok = false;
-    out.reason = e.what();
-  } catch (const LawDomainError& e) {
-    out.ok = false;
-    out.reason = e.what();
-  }
+  });
   return out;
 }
 
