@@ -134,4 +134,29 @@ TEST(CheckLaw, ParameterOfALawThatHasNoneIsNamed) {
   EXPECT_NE(r.err.find("--param mu"), std::string::npos) << r.err;
 }
 
+// The README's two adhesive examples, as printed there, on the shipped scene glass-bead: a
+// DMT-type law with its declared jump at onset (conservative: e = 1 at every v0) and a JKR-type
+// hysteresis captured in its well below 5 mm/s; both PASS with exit 0.
+TEST(CheckLaw, TheReadmesAdhesiveExamplesPassOnTheShippedGlassBead) {
+  const CliRun dmt =
+      ivv("check-law --scene glass-bead --force 'K_h*z^1.5 - Fad' --allow-tension "
+          "--onset-force=-Fad --param Fad=3.1e-5 --v0 1e-4,1e-3,1e-2,1e-1,1 --no-monotone");
+  EXPECT_EQ(dmt.exit_code, 0) << dmt.out << dmt.err;
+  EXPECT_NE(dmt.out.find("law expression: PASS (12 of 12 checks passed"), std::string::npos)
+      << dmt.out;
+  EXPECT_NE(dmt.out.find("no dashpot  0.0001: 1, 0.001: 1, 0.01: 1, 0.1: 1, 1: 1"),
+            std::string::npos)
+      << dmt.out;
+  const CliRun jkr =
+      ivv("check-law --scene glass-bead --force 'K_h*z^1.5' "
+          "--unload 'K_h*z^1.5 - Fad*(1 - z/zmax)' --allow-tension --param Fad=3.1e-5 "
+          "--v0 1e-4,1e-3,1e-2,1e-1,1 --cor-increasing-in-v0 --captured-below 0.005");
+  EXPECT_EQ(jkr.exit_code, 0) << jkr.out << jkr.err;
+  EXPECT_NE(jkr.out.find("law expression: PASS (14 of 14 checks passed"), std::string::npos)
+      << jkr.out;
+  EXPECT_NE(jkr.out.find("0.0001: 0 (captured, e <= 0), 0.001: 0 (captured, e <= 0)"),
+            std::string::npos)
+      << jkr.out;
+}
+
 }  // namespace
