@@ -35,6 +35,14 @@ std::string law_section_html(const conformance::Report& report, const std::strin
       html += "<li><code>" + escape(id) + "</code>: " + escape(why) + "</li>\n";
     html += "</ul>\n";
   }
+  if (!report.notes.empty()) {
+    html +=
+        "<p>Integrator accuracy, not the law's (a difference gone when the run was repeated "
+        "tighter, or a capture bound looser than the check's tolerance):</p>\n<ul>\n";
+    for (const conformance::IntegratorNote& n : report.notes)
+      html += "<li>" + escape(n.line()) + "</li>\n";
+    html += "</ul>\n";
+  }
   for (verification::Plot plot : report.plots()) {
     plot.id = slug(anchor + "-" + plot.id);
     const bool loop = plot.id.find("conformance-loop-") != std::string::npos;

@@ -470,6 +470,52 @@ std::string tsuji_example_html(const SectionOptions& so) {
                      rows, Source::from_cases({"examples.tsuji.*"}));
 }
 
+// The adhesive worked examples on the shipped glass bead: a DMT-type law with its declared jump
+// at onset (and the same law undeclared, rejected), a JKR-type hysteresis captured in its well.
+std::string adhesive_examples_html(const SectionOptions& so,
+                                   const std::function<PlacePlot(const std::string&)>& place) {
+  using verification::ExampleRun;
+  so.say("worked examples: adhesive laws");
+  const auto command = [](const ExampleRun& run) {
+    return "<p>The same check from the command line: <code>" + escape(run.command) +
+           "</code></p>\n";
+  };
+  const ExampleRun& dmt = verification::dmt_example(verification::OnsetDeclaration::declared);
+  const ExampleRun& undeclared =
+      verification::dmt_example(verification::OnsetDeclaration::undeclared);
+  const ExampleRun& jkr = verification::jkr_example();
+  const double v_c = verification::jkr_capture_speed(verification::glass_bead_scene());
+  std::string out =
+      "<h3 id=\"example-adhesive\">Adhesive laws on a 100 &micro;m glass bead</h3>\n"
+      "<p>The shipped scene <code>glass-bead</code> (R = 50 &micro;m, m = 1.466e-9 kg, the "
+      "glass of Chung &amp; Ooi 2011, on a glass flat, no dashpot) with a pull-off force "
+      "F<sub>ad</sub> = " +
+      number_html(verification::kBeadPullOff) +
+      " N (illustrative, not measured), tension allowed until z = 0.</p>\n"
+      "<h4>DMT-type: K<sub>h</sub>z<sup>3/2</sup> - F<sub>ad</sub>, jump at onset declared</h4>\n" +
+      law_section_html(dmt.report, "examples-dmt",
+                       command(dmt) +
+                           "<p>Conservative: e = 1 at every v<sub>0</sub>. Without "
+                           "<code>--onset-force=-Fad</code> the same law fails "
+                           "<code>static.onset</code> (case "
+                           "<code>examples.dmt.undeclared-jump-rejected</code>): " +
+                           escape(undeclared.report.brief()) + ".</p>\n",
+                       place("examples.dmt.*"), Source::from_cases({"examples.dmt.*"}));
+  out +=
+      "<h4>JKR-type: Hertz loading, unloading K<sub>h</sub>z<sup>3/2</sup> - "
+      "F<sub>ad</sub>(1 - z/z<sub>m</sub>)</h4>\n" +
+      law_section_html(
+          jkr.report, "examples-jkr",
+          command(jkr) +
+              "<p>Energy balance: e&sup2; = 1 - 5F<sub>ad</sub>/(4F<sub>max</sub>) "
+              "(F<sub>max</sub> the Hertz peak force), captured in the well (e = 0, decided at "
+              "the first unloading step: case <code>examples.jkr.captured-in-well</code>) below "
+              "v<sub>c</sub> = " +
+              number_html(v_c, 4) + " m/s.</p>\n",
+          place("examples.jkr.*"), Source::from_cases({"examples.jkr.*"}));
+  return out;
+}
+
 // Contact-law worked examples: the same memoised conformance runs the example cases judge.
 std::string examples_html(const SectionOptions& so, FigureBook& book) {
   using verification::ExampleRun;
@@ -517,7 +563,8 @@ std::string examples_html(const SectionOptions& so, FigureBook& book) {
                        place("examples.kelvin-voigt.rejected"),
                        Source::from_cases({"examples.kelvin-voigt.rejected"}));
 
-  return out + hunt_crossley_maps_example_html(so) + tsuji_example_html(so);
+  return out + hunt_crossley_maps_example_html(so) + tsuji_example_html(so) +
+         adhesive_examples_html(so, place);
 }
 
 std::string restitution_html(const SectionOptions& so, FigureBook& book) {

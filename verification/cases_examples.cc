@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "closed_forms/hunt_crossley.h"
+#include "solver/simulate.h"
 #include "verification/cases.h"
 #include "verification/examples.h"
 #include "verification/support.h"
@@ -48,6 +49,70 @@ Outcome kelvin_voigt_rejected() {
   Outcome o = at_least(run.report.passed() ? 0.0 : onset->measured, 1e-12,
                        run.report.brief() + "; " + onset->detail);
   return o;
+}
+
+// The DMT-type law with its jump at onset left undeclared must fail static.onset: F(0) = -F_ad.
+Outcome undeclared_adhesive_jump_rejected() {
+  const ExampleRun& run = dmt_example(OnsetDeclaration::undeclared);
+  const conformance::Check* onset = find_check(run.report, "static.onset");
+  if (!onset) return at_least(NAN, 1e-12, "static.onset did not run");
+  return at_least(onset->passed ? 0.0 : onset->measured, 1e-12,
+                  run.report.brief() + "; " + onset->detail);
+}
+
+// The JKR-type law's captured runs (no dashpot, v0 < v_c) through every integrator of the
+// example's grid: each is captured with the bound e <= 0, at the first unloading step. The
+// measure: the RHS evaluations of the captured run over those of the same integrator through a
+// whole contact of the law's loading curve alone (the expression K_h z^{3/2}, which rebounds at
+// the same v0). Deciding at the first unloading step costs about the loading half of that (~0.5);
+// running on in the well (before: to max_steps = 2e6 steps) is thousands of times more.
+// One glass-bead run of the JKR-type law (or, hertz_only, of its loading curve alone).
+ImpactResult bead_run(double v0, IntegratorKind k, bool hertz_only) {
+  SimulationRequest req;
+  req.scene = glass_bead_scene();
+  req.scene.velocity = v0;
+  req.law = LawKind::expression;
+  if (hertz_only) {
+    req.expression.force = "K_h*z^1.5";
+  } else {
+    req.expression = {
+        .force = "K_h*z^1.5", .unload = "K_h*z^1.5 - Fad*(1 - z/zmax)", .allow_tension = true};
+    req.parameters = {{"Fad", kBeadPullOff}};
+  }
+  req.integrator = k;
+  return simulate(req);
+}
+
+Outcome jkr_captured_in_well() {
+  const Scene bead = glass_bead_scene();
+  const double v_c = jkr_capture_speed(bead);
+  double worst = 0;
+  std::string counts, failed;
+  for (double v0 : jkr_velocities()) {
+    if (v0 >= v_c) continue;
+    for (IntegratorKind k : conformance::default_grid(bead).integrators) {
+      const ImpactResult captured = bead_run(v0, k, false);
+      const ImpactResult hertz = bead_run(v0, k, true);
+      const std::string at = std::string(to_string(k)) + " at v0 = " + fmt(v0);
+      if (captured.status != ImpactStatus::captured || captured.e_bound != 0.0) {
+        failed += "; " + at + ": not captured in the well: " + captured.reason;
+        continue;
+      }
+      if (!hertz.separated()) {
+        failed += "; " + at + ": the loading curve alone did not rebound: " + hertz.reason;
+        continue;
+      }
+      const double ratio = double(captured.rhs_evaluations) / double(hertz.rhs_evaluations);
+      worst = std::max(worst, ratio);
+      counts += (counts.empty() ? "" : ", ") + at + ": " + std::to_string(captured.steps) +
+                " steps, " + std::to_string(captured.rhs_evaluations) + " RHS (" +
+                std::to_string(hertz.rhs_evaluations) + " for a Hertz contact)";
+    }
+  }
+  if (!failed.empty()) return at_most(NAN, 1.0, failed.substr(2));
+  return at_most(worst, 1.0,
+                 "captured with e <= 0 at the first unloading step, largest RHS ratio " +
+                     fmt(worst, 3) + " (v_c = " + fmt(v_c, 4) + " m/s); " + counts);
 }
 
 // Hunt-Crossley with one damping map: ivv's delivered e against the exact Lambert-W value at
@@ -102,6 +167,49 @@ Outcome tsuji_cor_independent_of_v0(bool tension) {
       "largest spread of e over v0 0.01-10 m/s " + fmt(spread) + "; delivered: " + delivered);
 }
 
+// The adhesive laws on the shipped glass bead (examples.h: dmt, jkr).
+void register_adhesive_example_cases(Registry& reg) {
+  reg.add({"examples.dmt.conformance",
+           "A DMT-type adhesive law K_h z^{3/2} - F_ad with its declared jump at onset passes "
+           "every conformance check on the glass bead",
+           Tier::published_trend,
+           "each check carries its own tolerance and reason; the case counts the failures (the "
+           "grazing runs' integrator-accuracy notes are not failures)",
+           Cost::quick, [] { return all_checks_pass(dmt_example(OnsetDeclaration::declared)); }});
+  reg.add({"examples.dmt.cor", "The DMT-type law is conservative: e = 1 at every v0, grazing too",
+           Tier::conservation,
+           "the reference's error of e, ~1e-10 relative to the largest speed, which the well makes "
+           "~80 v0 at v0 = 1e-4 m/s: 8e-9; 1e-8",
+           Cost::quick, [] { return claimed_cor(dmt_example(OnsetDeclaration::declared)); }});
+  reg.add({"examples.dmt.undeclared-jump-rejected",
+           "The same DMT-type law without its onset declaration fails static.onset: F(0) = -F_ad",
+           Tier::published_trend,
+           "the onset force |F(0)| = F_ad is measured in units of F_ref; anything above the 1e-12 "
+           "rounding allowance of static.onset is a jump the check must catch",
+           Cost::quick, undeclared_adhesive_jump_rejected});
+  reg.add({"examples.jkr.conformance",
+           "A JKR-type adhesive hysteresis passes every conformance check, its adhesive claims too "
+           "(captured below v_c, e rising with v0)",
+           Tier::published_trend,
+           "each check carries its own tolerance and reason; the case counts the failures",
+           Cost::quick, [] { return all_checks_pass(jkr_example()); }});
+  reg.add({"examples.jkr.cor",
+           "The JKR-type law delivers its energy-balance COR, e^2 = 1 - 5 F_ad/(4 F_max), and "
+           "e = 0 (captured) below v_c",
+           Tier::analytic,
+           "the energy balance is exact for this law: the miss is the reference's error of e "
+           "(~1e-10); 1e-9 leaves a factor 10",
+           Cost::quick, [] { return claimed_cor(jkr_example()); }});
+  reg.add({"examples.jkr.captured-in-well",
+           "Below v_c the JKR-type law is captured in its well at the first unloading step, by "
+           "every integrator, without a dashpot",
+           Tier::stability,
+           "RHS evaluations of the captured run over those of a whole Hertz contact at the same "
+           "v0 and integrator: deciding at the first unloading step costs about the loading "
+           "half (~0.5); above 1 the run went on in the well",
+           Cost::quick, jkr_captured_in_well});
+}
+
 }  // namespace
 
 void register_example_cases(Registry& reg) {
@@ -132,6 +240,7 @@ void register_example_cases(Registry& reg) {
            "the onset force F(0, v0) = c v0 is measured in units of F_ref; anything above the "
            "1e-12 rounding allowance of static.onset is a discontinuity the check must catch",
            Cost::quick, kelvin_voigt_rejected});
+  register_adhesive_example_cases(reg);
   for (const auto& map : closed_forms::damping_maps()) {
     const std::string name(map.name);
     reg.add({"examples.hunt-crossley." + name,

@@ -8,6 +8,11 @@
 //   kelvin-voigt    F = k z + c dz/dt (expression law): rejected, F(0) != 0 at impact
 //   hunt-crossley   F = K_h z^{3/2} (1 + mu dz/dt) with each published mu(e) map as the claim
 //   tsuji           Hertz with the Tsuji-type damping of DEM codes, clamped and with tension
+//   dmt             an adhesive DMT-type law K_h z^{3/2} - F_ad with its declared jump at onset
+//                   (expression law, tension allowed), on the shipped scene glass-bead; the same
+//                   law with the jump undeclared is rejected
+//   jkr             a JKR-type hysteresis: Hertz loading, unloading K_h z^{3/2} - F_ad (1 - z/z_m),
+//                   captured in its adhesive well below a speed, e rising with v0 above it
 #pragma once
 
 #include <string>
@@ -36,6 +41,28 @@ const ExampleRun& kelvin_voigt_example();
 const ExampleRun& hunt_crossley_map_example(const std::string& map, double e_t);
 // Tsuji-type damping at target e_t, clamped (F >= 0) or with tension until z = 0.
 const ExampleRun& tsuji_example(double e_t, bool tension);
+
+// The adhesive examples: the 100 um glass bead of reference_data/scenes/glass-bead.toml with a
+// pull-off force F_ad (an illustrative value, the README's; not a measurement).
+inline constexpr double kBeadPullOff = 3.1e-5;  // F_ad [N]
+Scene glass_bead_scene();                       // the shipped scene, loaded by name
+// DMT-type law F = K_h z^{3/2} - F_ad, tension until z = 0, its jump to -F_ad at onset declared
+// (`--onset-force=-Fad`) or not; conservative: e = 1 at every v0.
+enum class OnsetDeclaration { declared, undeclared };
+const ExampleRun& dmt_example(OnsetDeclaration onset);
+// JKR-type law: loading K_h z^{3/2}, unloading K_h z^{3/2} - F_ad (1 - z/z_m), tension until
+// z = 0, no dashpot, claimed: e = jkr_cor(v0), captured below jkr_capture_speed(), e rising in v0.
+const ExampleRun& jkr_example();
+// Its COR by energy (exact for this law without a dashpot): loading stores the Hertz energy
+// E0 = (2/5) K_h z_m^{5/2} = 1/2 m v0^2, so z_m = (5 m v0^2/(4 K_h))^{2/5}; unloading from z_m to
+// z = 0 returns E0 - F_ad z_m/2 (the linear adhesive term's area). Below z_f (F = 0) the force
+// pulls, so the speed is least at z = 0: the bead leaves iff E0 > F_ad z_m/2, with
+//   e^2 = 1 - F_ad z_m/(2 E0) = 1 - 5 F_ad/(4 F_max),   F_max = K_h z_m^{3/2} [N],
+// and is captured (e = 0) below v_c, where 4 F_max(v_c) = 5 F_ad. Scene SI units; e in [0, 1].
+double jkr_cor(const Scene& bead, double v0);
+double jkr_capture_speed(const Scene& bead);  // v_c [m/s]
+// The grid velocities of the JKR example [m/s]: the README's five and two bracketing v_c.
+const std::vector<double>& jkr_velocities();
 
 // The check of a report with this id, or nullptr.
 const conformance::Check* find_check(const conformance::Report& r, const std::string& id);
