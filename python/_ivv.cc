@@ -380,6 +380,15 @@ conformance::Claims check_claims(const SimulationRequest& req, const py::dict& k
   claims.elastic_at_low_speed = get<bool>(kw, "elastic_at_low_speed").value_or(false);
   claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping =
       get<bool>(kw, "monotone").value_or(true);
+  if (get<bool>(kw, "cor_increasing_in_v0").value_or(false)) {  // replaces e falling with v0
+    claims.cor_nonincreasing_in_v0 = false;
+    claims.cor_nondecreasing_in_v0 = true;
+  }
+  if (auto v = get<double>(kw, "captured_below")) {
+    if (!(*v > 0 && std::isfinite(*v)))
+      throw InputError("--captured-below", "a speed in m/s, finite and > 0");
+    claims.captured_below = v;
+  }
   if (auto expect = get<std::string>(kw, "expect_cor"); expect && !expect->empty()) {
     claims.expected_cor =
         compile_cor_claim(*expect, req.parameters, req.scene, oracles::expression_functions());
@@ -393,8 +402,30 @@ conformance::Claims check_claims(const SimulationRequest& req, const py::dict& k
   return claims;
 }
 
-const std::vector<std::string> kCheckArgs = {
-    "v0", "zeta", "c", "expect_cor", "cor_tolerance", "elastic_at_low_speed", "monotone", "name"};
+const std::vector<std::string> kCheckArgs = {"v0",
+                                             "zeta",
+                                             "c",
+                                             "expect_cor",
+                                             "cor_tolerance",
+                                             "name",
+                                             "elastic_at_low_speed",
+                                             "monotone",
+                                             "cor_increasing_in_v0",
+                                             "captured_below",
+                                             "onset_force"};
+
+// An expression law's declared onset force (`--onset-force EXPR`), checked as the CLI checks it.
+void declare_onset_force(RequestOptions& o, const py::dict& checks) {
+  const auto onset = get<std::string>(checks, "onset_force");
+  if (!onset) return;
+  if (o.expression.force.empty())
+    throw InputError("--onset-force",
+                     "declares the onset force of an expression law (--force); a C++ law "
+                     "declares its own (the member onset_force())");
+  if (onset->find_first_not_of(" \t") == std::string::npos)
+    throw InputError("--onset-force", "is empty; give the force [N] at z = 0, e.g. '-Fad'");
+  o.expression.onset_force = *onset;
+}
 
 // The verdict with every check: the object `ivv check-law --json` prints.
 py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& checks) {
@@ -403,8 +434,9 @@ py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& check
       !get<double>(kw, "hc_k") && !get<double>(kw, "hc_mu"))
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
-  const SimulationRequest req =
-      to_check_law_request(s.scene, request_options(s, kw, "check_law()"));
+  RequestOptions options = request_options(s, kw, "check_law()");
+  declare_onset_force(options, checks);
+  const SimulationRequest req = to_check_law_request(s.scene, options);
   const conformance::Grid grid = check_grid(req, checks);
   const conformance::Claims claims = check_claims(req, checks);
   conformance::LawUnderTest law = conformance::registry_law(req);
@@ -420,6 +452,7 @@ py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& check
     j["law"]["force"] = req.expression.force;
     j["law"]["unload"] = req.expression.unload;
     j["law"]["allow_tension"] = req.expression.allow_tension;
+    if (!req.expression.onset_force.empty()) j["law"]["onset_force"] = req.expression.onset_force;
   }
   j["law"]["scene"] = req.scene.name;
   if (claims.expected_cor) j["law"]["expect_cor"] = claims.expected_cor_text;

@@ -308,19 +308,26 @@ class LawVerdict(_Fields):
 
 
 def check_law(force=None, unload=None, params=None, *, law=None, scene="paper",
-              allow_tension=False, expect_cor=None, cor_tolerance=None,
-              elastic_at_low_speed=False, monotone=True, v0=None, zeta=None, c=None,
-              name=None, integrator="auto", model="auto", rtol=None, atol=None, hc_k=None,
-              hc_mu=None):
+              allow_tension=False, onset_force=None, expect_cor=None, cor_tolerance=None,
+              elastic_at_low_speed=False, monotone=True, cor_increasing_in_v0=False,
+              captured_below=None, v0=None, zeta=None, c=None, name=None, integrator="auto",
+              model="auto", rtol=None, atol=None, hc_k=None, hc_mu=None):
     """A contact law through the conformance checks (`ivv check-law --json`).
 
     force, unload   the loading and unloading force [N] as expressions in z, zdot, zmax, the
                     scene's m, R, E_star, K_h, z_y, K_y, v0 and the names of `params`
     law             a built-in law's name instead of an expression
     params          {name: value}; allow_tension: F may pull, contact ends at z = 0
+    onset_force     an adhesive law's intended force at z = 0 on first loading [N], an
+                    expression like force (e.g. "-Fad"; `--onset-force`): static.onset holds
+                    F(0) to it instead of to 0
     scene           the scene (an ivv.Scene or a name/path; default "paper")
-    Claims: expect_cor (an expression in v0, e.g. "hc_cor(...)"), cor_tolerance,
-    elastic_at_low_speed, monotone (e falls with v0 and with damping; default True).
+    Claims: expect_cor (an expression in v0, e.g. "hc_cor(...)"; captured rows are judged
+    against their interval [0, e_bound]), cor_tolerance, elastic_at_low_speed, monotone (e
+    falls with v0 and with damping; default True), cor_increasing_in_v0 (e never falls as v0
+    rises, in place of monotone's claim in v0; `--cor-increasing-in-v0`), captured_below (a
+    speed V [m/s]: captured at every grid velocity below V, and without a dashpot rebounding
+    at every one at or above it; `--captured-below`).
     Grid: v0, zeta, c (array_like; default: the CLI's grid around the scene's v0).
 
     Returns a LawVerdict: .verdict, .passed, .checks (every check with its measured value,
@@ -332,7 +339,9 @@ def check_law(force=None, unload=None, params=None, *, law=None, scene="paper",
     if params is None:
         del opts["params"]
     checks = dict(expect_cor=expect_cor, cor_tolerance=cor_tolerance,
-                  elastic_at_low_speed=elastic_at_low_speed, monotone=monotone, name=name)
+                  elastic_at_low_speed=elastic_at_low_speed, monotone=monotone, name=name,
+                  cor_increasing_in_v0=cor_increasing_in_v0, captured_below=captured_below,
+                  onset_force=onset_force)
     for key, grid in (("v0", v0), ("zeta", zeta), ("c", c)):
         if grid is not None:
             checks[key] = [float(x) for x in _np.atleast_1d(_np.asarray(grid, dtype=float))]

@@ -411,6 +411,56 @@ def test_an_expression_law_on_a_finite_plate_as_the_cli_runs_it():
         ivv.check_law(force="K_h*z^1.5", scene=plate, v0=[1], zeta=[0.1])
 
 
+# The adhesive claims as the CLI takes them, on the shipped glass bead (README: adhesive laws).
+BEAD_V0 = [1e-4, 1e-3, 1e-2, 1e-1, 1]
+
+
+def test_check_law_adhesive_claims_equal_the_cli_json():
+    jkr = dict(force="K_h*z^1.5", unload="K_h*z^1.5 - Fad*(1 - z/zmax)", allow_tension=True,
+               params={"Fad": 3.1e-5}, scene="glass-bead", v0=BEAD_V0)
+    v = ivv.check_law(**jkr, cor_increasing_in_v0=True, captured_below=0.005)
+    run = cli("check-law", "--scene", "glass-bead", "--force", "K_h*z^1.5",
+              "--unload", "K_h*z^1.5 - Fad*(1 - z/zmax)", "--allow-tension",
+              "--param", "Fad=3.1e-5", "--v0", "1e-4,1e-3,1e-2,1e-1,1",
+              "--cor-increasing-in-v0", "--captured-below", "0.005", "--json")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert as_printed(v.to_dict()) == json.loads(run.stdout)
+    assert v.passed, v.failed()
+    ran = {c["id"]: c for c in v.checks}
+    assert ran["dynamic.captured_below"]["passed"] and ran["dynamic.increasing_v0"]["passed"]
+    assert [p["status"] for p in v.cor][:2] == ["captured", "captured"]
+    # the claim is judged: the well does not capture at 1 mm/s, so "below 0.5 mm/s" is wrong there
+    wrong = ivv.check_law(**jkr, cor_increasing_in_v0=True, captured_below=5e-4)
+    assert "dynamic.captured_below" in wrong.failed()
+    # without cor_increasing_in_v0 the default claim (e falls with v0) fails this law
+    assert "dynamic.monotone_v0" in ivv.check_law(**jkr).failed()
+
+
+def test_check_law_declared_onset_force_equals_the_cli_json():
+    dmt = dict(force="K_h*z^1.5 - Fad", allow_tension=True, params={"Fad": 3.1e-5},
+               scene="glass-bead", v0=[1e-3, 1e-2], monotone=False)
+    v = ivv.check_law(**dmt, onset_force="-Fad")
+    run = cli("check-law", "--scene", "glass-bead", "--force", "K_h*z^1.5 - Fad",
+              "--allow-tension", "--onset-force=-Fad", "--param", "Fad=3.1e-5",
+              "--v0", "1e-3,1e-2", "--no-monotone", "--json")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert as_printed(v.to_dict()) == json.loads(run.stdout)
+    assert v.passed and v.law["onset_force"] == "-Fad"
+    assert "static.onset" in ivv.check_law(**dmt).failed()  # the jump undeclared
+
+
+def test_check_law_adhesive_claims_refuse_bad_input_as_the_cli_does():
+    with pytest.raises(ivv.InputError) as caught:
+        ivv.check_law(force="K_h*z^1.5", captured_below=-1)
+    assert str(caught.value) == cli_error("check-law", "--force", "K_h*z^1.5",
+                                          "--captured-below", "-1")
+    assert caught.value.field == "--captured-below"
+    with pytest.raises(ivv.InputError) as caught:
+        ivv.check_law(law="hertz", onset_force="-1")
+    assert str(caught.value) == cli_error("check-law", "--law", "hertz", "--onset-force=-1")
+    assert caught.value.field == "--onset-force"
+
+
 def test_check_law_needs_a_law():
     with pytest.raises(ivv.InputError) as caught:
         ivv.check_law()
