@@ -38,7 +38,8 @@ std::string law_section_html(const conformance::Report& report, const std::strin
   if (!report.notes.empty()) {
     html +=
         "<p>Integrator accuracy, not the law's (a difference gone when the run was repeated "
-        "tighter, or a capture bound looser than the check's tolerance):</p>\n<ul>\n";
+        "tighter, a capture bound looser than the check's tolerance, or a run the integrator could "
+        "not finish where the reference did):</p>\n<ul>\n";
     for (const conformance::IntegratorNote& n : report.notes)
       html += "<li>" + escape(n.line()) + "</li>\n";
     html += "</ul>\n";

@@ -102,7 +102,7 @@ class LedgerJudge {
     const std::string who = k ? std::string(to_string(*k)) : "reference";
     if (k && stiff_for_integrator(r, x)) {
       result_.notes.push_back(stiffness_note("dynamic.energy", r, who, tol_, x));
-      ++excused_["dynamic.energy"];
+      ++stopped_;  // no ledger to judge: the run did not reach the end
       return;
     }
     const LedgerMeasures m = ledger_measures(x);
@@ -134,7 +134,7 @@ class LedgerJudge {
     Check& en = result_.checks.emplace_back(make_check(
         "dynamic.energy", energy_.value, 0.0, tol_, energy_.value <= tol_ && failed_ == 0, reason,
         "largest |ledger residual| / E0 = " + fmt(energy_.value) + " (" + energy_.at + ")" +
-            failures + notes_text("dynamic.energy")));
+            failures + notes_text("dynamic.energy") + stopped_text()));
     en.unit = "E0", en.unit_si = NAN, en.si_unit = "J (E0 = m v0^2/2 of each run)";
     result_.checks.push_back(make_check(
         "dynamic.cor_range", range_.value, 0.0, tol_, range_.value <= tol_ && failed_ == 0,
@@ -175,6 +175,14 @@ class LedgerJudge {
         ++excused_[id];
       }
   }
+  // Runs an explicit integrator stopped short (the stiffness bound): not in the ledger's worst.
+  std::string stopped_text() const {
+    return stopped_ ? "; " + std::to_string(stopped_) +
+                          " run(s) stopped by the integrator before the end (a dashpot too stiff "
+                          "for an explicit stepper; the reference ended them): no ledger to "
+                          "judge, not an energy defect (integrator notes)"
+                    : "";
+  }
   std::string notes_text(const std::string& id) const {
     const auto it = excused_.find(id);
     return it != excused_.end() ? "; " + std::to_string(it->second) +
@@ -188,6 +196,7 @@ class LedgerJudge {
   double tol_;
   Worst energy_, range_, definitions_;
   int failed_ = 0;
+  int stopped_ = 0;                     // runs the stiffness bound stopped (stiff_for_integrator)
   std::map<std::string, int> excused_;  // per check id
   std::string first_failure_;
 };
@@ -261,7 +270,7 @@ class IntegratorJudge {
   void judge(const Run& r, IntegratorKind k, const ImpactResult& x) {
     if (stiff_for_integrator(r, x)) {
       result_.notes.push_back(stiffness_note("dynamic.integrators", r, to_string(k), tol_, x));
-      ++excused_;
+      ++stopped_;
       return;
     }
     const auto d = difference(x, r.reference, tol_);
@@ -322,6 +331,10 @@ class IntegratorJudge {
             (excused_
                  ? "; " + std::to_string(excused_) + " integrator-accuracy note(s), not the law's"
                  : "") +
+            (stopped_ ? "; " + std::to_string(stopped_) +
+                            " run(s) stopped by the integrator before the end (a dashpot too "
+                            "stiff for an explicit stepper), not compared (integrator notes)"
+                      : "") +
             domain_note(runs)));
   }
 
@@ -342,6 +355,7 @@ class IntegratorJudge {
   double worst_ = 0;
   std::string worst_at_ = "no comparison", mismatch_;
   int compared_ = 0, captured_ = 0, excused_ = 0;
+  int stopped_ = 0;  // runs the stiffness bound stopped (stiff_for_integrator)
 };
 
 void integrator_check(Rechecks& rechecks, const LawUnderTest& law, const std::vector<Run>& runs,

@@ -90,8 +90,12 @@ std::string ConformanceResult::brief() const {
 std::string IntegratorNote::line() const {
   std::ostringstream os;
   os << "note  " << std::left << std::setw(26) << check << " " << integrator
-     << " at v0 = " << fmt(v0) << " m/s, " << damping << ": " << detail << " (measured "
-     << fmt(error, 4) << ", tolerance " << fmt(tolerance, 4);
+     << " at v0 = " << fmt(v0) << " m/s, " << damping << ": " << detail << " (";
+  if (std::isfinite(error))
+    os << "measured " << fmt(error, 4);
+  else
+    os << "nothing measured: the run did not reach the end";
+  os << ", tolerance " << fmt(tolerance, 4);
   if (std::isfinite(error_tight)) os << "; repeated tighter " << fmt(error_tight, 4);
   os << ")";
   return os.str();
@@ -102,7 +106,8 @@ std::string ConformanceResult::notes_text() const {
   std::ostringstream os;
   os << "integrator accuracy, not the law's (" << notes.size()
      << " note(s): a difference the integrator's tolerance explains, gone when the run was "
-        "repeated tighter, or a capture bound looser than the check's tolerance):\n";
+        "repeated tighter, a capture bound looser than the check's tolerance, or a run the "
+        "integrator could not finish where the reference did):\n";
   for (const IntegratorNote& n : notes) os << "  " << n.line() << "\n";
   return os.str();
 }

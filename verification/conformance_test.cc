@@ -310,6 +310,14 @@ TEST(Conformance, AStiffDashpotEndsWithAVerdictAndTheExplicitStopsAsNotes) {
   for (const IntegratorNote& n : r.notes)
     stiff += n.detail.find("needs an implicit integrator") != std::string::npos;
   EXPECT_GT(stiff, 0) << r.full();
+  // the stops are said to be stops, not an energy excess that vanished tighter
+  const std::string energy = check(r, "dynamic.energy").detail;
+  EXPECT_NE(energy.find("stopped by the integrator before the end"), std::string::npos) << energy;
+  EXPECT_NE(energy.find("not an energy defect"), std::string::npos) << energy;
+  EXPECT_EQ(energy.find("gone when repeated tighter"), std::string::npos) << energy;
+  EXPECT_NE(check(r, "dynamic.integrators").detail.find("stopped by the integrator"),
+            std::string::npos);
+  EXPECT_EQ(r.full().find("(measured inf"), std::string::npos) << r.full();
   for (const CorPoint& p : r.cor) {
     if (p.c == 1e-6) {
       EXPECT_EQ(p.status, "captured") << p.v0;
