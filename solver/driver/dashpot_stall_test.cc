@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "solver/simulate.h"
 
@@ -66,6 +68,44 @@ TEST(DashpotStall, AnExplicitStepperThatCanFinishIsNotStopped) {
   const ImpactResult r = simulate(req);
   EXPECT_EQ(r.status, ImpactStatus::captured) << r.reason;
   EXPECT_GT(r.steps, 10'000);  // the stability-held regime the bound watches
+}
+
+// The margin kStallMargin holds: runs an explicit stepper finishes, held by stability to a stiff
+// dashpot, given a budget of exactly the steps they take (max_steps = N: at every check the steps
+// left are the steps the run really needs), still finish with the same e. The stop fires only
+// where the projection exceeds 10 times the steps left, so it did not fire: on these runs the
+// projection at the present step stays below 10 times the steps really needed.
+TEST(DashpotStall, ItCannotFireOnARunThatFinishesWithinItsBudget) {
+  struct Finishing {
+    std::string what;
+    SimulationRequest req;
+  };
+  std::vector<Finishing> runs;
+  for (double zeta : {30.0, 300.0})
+    for (LawKind law : {LawKind::hertz, LawKind::elastoplastic}) {
+      SimulationRequest req;
+      req.scene = paper_scene();
+      req.scene.velocity = 1.0;
+      req.scene.damping = Damping::ratio(zeta);
+      req.law = law;
+      req.model = ModelKind::full;
+      runs.push_back({std::string(to_string(law)) + " zeta = " + std::to_string(zeta), req});
+    }
+  SimulationRequest bead = jkr_bead(1e-2, IntegratorKind::dp45);
+  bead.scene.damping = Damping::coefficient(1e-4);  // zeta ~ 20: explicit steppers finish
+  runs.push_back({"JKR bead c = 1e-4", bead});
+  for (Finishing& f : runs)
+    for (IntegratorKind k : {IntegratorKind::dop853, IntegratorKind::dp45}) {
+      f.req.integrator = k;
+      f.req.options.max_steps = 2'000'000;
+      const ImpactResult free = simulate(f.req);
+      ASSERT_TRUE(free.ok()) << f.what << " " << to_string(k) << ": " << free.reason;
+      ASSERT_GT(free.steps, 1000) << f.what << ": not the stability-held regime the stop watches";
+      f.req.options.max_steps = free.steps;
+      const ImpactResult tight = simulate(f.req);
+      EXPECT_TRUE(tight.ok()) << f.what << " " << to_string(k) << ": " << tight.reason;
+      EXPECT_EQ(tight.e, free.e) << f.what << " " << to_string(k);
+    }
 }
 
 }  // namespace
