@@ -219,8 +219,14 @@ SweepSink::RowFacts SweepSink::facts(const std::string& row) const {
 }
 
 void SweepSink::count(const std::string& row, const RowFacts& facts) {
-  ++counts_.routes[row.substr(facts.route, facts.route_size)];
-  ++counts_.integrators[row.substr(facts.integrator, facts.integrator_size)];
+  auto tally = [](std::map<std::string, std::size_t, std::less<>>& counts, std::string_view name) {
+    auto it = counts.find(name);
+    if (it == counts.end()) it = counts.emplace(std::string(name), 0).first;
+    ++it->second;
+  };
+  const std::string_view text(row);
+  tally(counts_.routes, text.substr(facts.route, facts.route_size));
+  tally(counts_.integrators, text.substr(facts.integrator, facts.integrator_size));
   if (facts.status == ImpactStatus::separated)
     ++counts_.separated;
   else if (facts.status == ImpactStatus::captured)

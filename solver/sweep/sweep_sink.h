@@ -36,7 +36,8 @@ struct SweepCounts {
   std::size_t separated = 0, captured = 0, failed = 0;
   // rows per route and per integrator (the CSV's columns): what --model auto and
   // --integrator auto chose over the grid
-  std::map<std::string, std::size_t> routes, integrators;
+  // (std::less<>: a row's name is looked up as a string_view, with no string made for it)
+  std::map<std::string, std::size_t, std::less<>> routes, integrators;
 };
 
 struct SweepOutputOptions {
