@@ -290,6 +290,14 @@ void SweepSink::record(PreparedRow&& p) {
     io_error(journal_path(), std::strerror(errno));
   count(p.row, p.facts);
   ++delivered_;
+  // the next row of the output, with nothing waiting before it (every row of a one-thread
+  // sweep): written at once, without a node of the reorder map (one allocation a row)
+  if (p.index == next_write_ && pending_.empty()) {
+    write_row(p.row);
+    ++next_write_;
+    wrote_ = true;
+    return;
+  }
   pending_.emplace(p.index, std::move(p.row));
 }
 
@@ -336,7 +344,8 @@ void SweepSink::record_batch(std::vector<PreparedRow>& prepared) {
 }
 
 void SweepSink::write_ready() {
-  bool wrote = false;
+  bool wrote = wrote_;
+  wrote_ = false;
   for (auto it = pending_.begin(); it != pending_.end() && it->first == next_write_;
        it = pending_.erase(it), ++next_write_) {
     write_row(it->second);

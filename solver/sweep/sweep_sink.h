@@ -169,6 +169,7 @@ class SweepSink {
   std::size_t next_write_ = 0;  // first index not yet in the partial CSV
   std::size_t delivered_ = 0;
   std::map<std::size_t, std::string> pending_;  // finished, waiting for earlier points
+  bool wrote_ = false;  // record() wrote a row directly since write_ready() last notified
   SweepCounts counts_;
   std::FILE* journal_ = nullptr;
   std::FILE* partial_ = nullptr;
