@@ -1,12 +1,170 @@
 #include "solver/format.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 
 namespace ivv {
+namespace {
+
+// ---- general(v, p) for p <= 15 without Ryu's printf tables ---------------------------------
+//
+// std::to_chars with a precision (Ryu printf) costs ~690 instructions a number (callgrind, the
+// sweep's 12-digit results); the rounding it does exactly can be done in double arithmetic
+// for all but a vanishing set of values, which go to it:
+//   |v| 10^s = q + c exactly, q the rounded product and c the rest, by an error-free product
+//   (fma: for |s| <= 22, 10^s is exact in double; up to 44 by two exact factors), so the p-digit
+//   integer nearest to |v| 10^s, s = p - 1 - E, is floor(q) + [frac(q) + c > 1/2], decided
+//   exactly unless frac(q) + c is within kTieMargin of 1/2, where the rounding error of that
+//   sum (~1e-16) could decide it: such values are left to std::to_chars, as are p > 15 (the
+//   integer passes 2^53 / 10), zero, the non-finite and |v| outside about [1e-30, 1e30].
+// The output is the same bytes: format_test holds it against printf's "%.{p}g" on every
+// precision, over random doubles, exact ties and values next to them.
+
+// 10^0 .. 10^22: each exact in double (5^22 < 2^53).
+constexpr std::array<double, 23> kExactPowers = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+constexpr int kMaxExactPower = 22;
+constexpr int kMaxFastPrecision = 15;
+// Nearer a tie than this (in units of the last kept digit) goes to std::to_chars: the sum
+// frac(q) + c is in error by at most ~1e-16 (one rounding of a number below 2).
+constexpr double kTieMargin = 1e-9;
+
+// a 10^s = q + c (c to within ~1e-16 |c|); nullopt for |s| beyond what two exact factors reach.
+struct Scaled {
+  double q, c;
+};
+std::optional<Scaled> scale_by_power_of_ten(double a, int s) {
+  if (s >= 0 && s <= kMaxExactPower) {
+    const double P = kExactPowers[s];
+    const double q = a * P;
+    return Scaled{q, std::fma(a, P, -q)};
+  }
+  if (s < 0 && s >= -kMaxExactPower) {
+    const double D = kExactPowers[-s];
+    const double q = a / D;
+    return Scaled{q, std::fma(-q, D, a) / D};  // a - q D is exact for the rounded quotient q
+  }
+  if (s > kMaxExactPower && s <= 2 * kMaxExactPower) {
+    const double P1 = kExactPowers[kMaxExactPower], P2 = kExactPowers[s - kMaxExactPower];
+    const double q1 = a * P1, r1 = std::fma(a, P1, -q1);
+    const double q = q1 * P2;
+    return Scaled{q, std::fma(q1, P2, -q) + r1 * P2};
+  }
+  return std::nullopt;
+}
+
+// a > 0 rounded to p significant digits: digits in [10^(p-1), 10^p), a ~ digits 10^(E - p + 1).
+struct Rounded {
+  std::uint64_t digits;
+  int exponent;  // E: the decimal exponent of the leading digit
+};
+std::optional<Rounded> round_to_digits(double a, int p) {
+  // E = floor(log10 a) from the binary exponent (floor((e2 - 1) log10 2), 78913 / 2^18 being
+  // log10 2 to 6 digits: exact for |e2| < 1000), then one compare with the nearest power of ten
+  // (a double near 10^(E+1): a value within an ulp of it may get E one off, which the loop below
+  // corrects)
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &a, sizeof a);
+  const int e2 = static_cast<int>((bits >> 52) & 0x7ff) - 1022;  // a in [2^(e2-1), 2^e2)
+  int E = ((e2 - 1) * 78913) >> 18;
+  if (E + 1 >= -kMaxExactPower && E + 1 <= kMaxExactPower &&
+      a >= (E + 1 >= 0 ? kExactPowers[E + 1] : 1.0 / kExactPowers[-(E + 1)]))
+    ++E;
+  const double lo = kExactPowers[p - 1], hi = kExactPowers[p];
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const std::optional<Scaled> sc = scale_by_power_of_ten(a, p - 1 - E);
+    if (!sc || !(sc->q < 1e300)) return std::nullopt;
+    double whole = std::floor(sc->q);
+    double fraction = (sc->q - whole) + sc->c;  // q - floor(q) is exact
+    if (fraction < 0) {
+      whole -= 1;
+      fraction += 1;
+    } else if (fraction >= 1) {
+      whole += 1;
+      fraction -= 1;
+    }
+    if (whole < lo) {
+      --E;
+      continue;
+    }
+    if (whole >= hi) {
+      ++E;
+      continue;
+    }
+    if (std::abs(fraction - 0.5) < kTieMargin) return std::nullopt;
+    std::uint64_t digits = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+    if (digits == static_cast<std::uint64_t>(hi)) {  // 9.99...5 rounded up to 10.0...
+      digits /= 10;
+      ++E;
+    }
+    return Rounded{digits, E};
+  }
+  return std::nullopt;
+}
+
+// The p decimal digits of n < 10^p at d, two at a time.
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+void write_digits(char* d, std::uint64_t n, int p) {
+  char* q = d + p;
+  while (q - d >= 2) {
+    q -= 2;
+    std::memcpy(q, kDigitPairs + 2 * (n % 100), 2);
+    n /= 100;
+  }
+  if (q > d) *--q = static_cast<char>('0' + n);
+}
+
+// printf's "%.{p}g" of a rounded value: trailing zeros dropped, scientific when E < -4 or
+// E >= p (exponent of at least two digits).
+char* write_rounded(char* out, bool negative, const Rounded& r, int p) {
+  char d[24];
+  write_digits(d, r.digits, p);
+  int k = p;
+  while (k > 1 && d[k - 1] == '0') --k;
+  const int E = r.exponent;
+  if (negative) *out++ = '-';
+  if (E < -4 || E >= p) {
+    *out++ = d[0];
+    if (k > 1) {
+      *out++ = '.';
+      out = std::copy(d + 1, d + k, out);
+    }
+    *out++ = 'e';
+    *out++ = E < 0 ? '-' : '+';
+    const int m = E < 0 ? -E : E;
+    if (m < 10) *out++ = '0';
+    return std::to_chars(out, out + 4, m).ptr;
+  }
+  if (E >= 0) {
+    if (k <= E + 1) return std::fill_n(std::copy(d, d + k, out), E + 1 - k, '0');
+    out = std::copy(d, d + E + 1, out);
+    *out++ = '.';
+    return std::copy(d + E + 1, d + k, out);
+  }
+  *out++ = '0';
+  *out++ = '.';
+  out = std::fill_n(out, -E - 1, '0');
+  return std::copy(d, d + k, out);
+}
+
+}  // namespace
 
 char* write_general(char* first, double v, int precision) {
   precision = std::clamp(precision, 0, kMaxPrecision);
+  const int p = std::max(precision, 1);
+  if (p <= kMaxFastPrecision && std::isfinite(v) && v != 0) {
+    if (const std::optional<Rounded> r = round_to_digits(std::abs(v), p))
+      return write_rounded(first, std::signbit(v), *r, p);
+  }
   return std::to_chars(first, first + kMaxNumberChars, v, std::chars_format::general, precision)
       .ptr;
 }

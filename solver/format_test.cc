@@ -81,6 +81,45 @@ TEST(Format, GeneralIsPrintfGAtEveryPrecision) {
   EXPECT_EQ(mismatches, 0);
 }
 
+// write_general's fast path (p <= 15, format.cc) decides the rounding in double arithmetic and
+// hands values within 1e-9 of a tie to std::to_chars: exact ties (k + 1/2 at p digits, each
+// representable: 2.5, 123456789012.5), their neighbours an ulp either side, values that round
+// up to the next power of ten (9.9999999999995 at 12 digits), and the range edges of its scaling
+// (|v| near 1e-30 and 1e30, where it stops), against printf at every precision. 20,000 random
+// magnitudes of each decade a sweep prints (1e-40 to 1e40) are held the same way.
+TEST(Format, FastRoundingAgreesWithPrintfAtTiesAndEdges) {
+  std::vector<double> v;
+  std::mt19937_64 gen(32);
+  std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-40, 40);
+  std::uniform_int_distribution<int> shift(-8, 8);
+  for (int i = 0; i < 20000; ++i) {
+    const double x = mantissa(gen) * std::pow(10.0, exponent(gen));
+    v.push_back(i % 2 ? -x : x);
+  }
+  for (int p = 1; p <= 15; ++p) {
+    for (int i = 0; i < 200; ++i) {
+      const double tie =
+          (std::floor(mantissa(gen) * std::pow(10.0, p - 1)) + 0.5) * std::pow(10.0, shift(gen));
+      for (double x : {tie, std::nextafter(tie, 0.0), std::nextafter(tie, 1e300)}) v.push_back(x);
+    }
+    const double below_power = 10.0 - 5.0 * std::pow(10.0, -p);  // rounds up to 10 at p digits
+    for (double x : {below_power, std::nextafter(below_power, 0.0), 0.5, 2.5, 123456789012.5})
+      v.push_back(x);
+  }
+  for (double edge : {1e-30, 1e-29, 1e-33, 1e-34, 1e30, 1e31, 1e36, 1e37})
+    for (double x : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 1e300)}) v.push_back(x);
+  int mismatches = 0;
+  for (double x : v)
+    for (int p = 0; p <= kMaxPrecision; ++p) {
+      std::string s;
+      append_general(s, x, p);
+      if (s != printf_g(x, p) && ++mismatches <= 10)
+        ADD_FAILURE() << "precision " << p << ": " << s << " vs printf " << printf_g(x, p);
+    }
+  EXPECT_EQ(mismatches, 0);
+}
+
 TEST(Format, FmtIsAnOstreamAtItsPrecision) {
   for (double x : samples()) {
     if (std::isnan(x)) continue;  // an ostream prints a NaN's sign as printf does; not its job

@@ -6,6 +6,7 @@
 #include "oracles/hertz.h"
 #include "oracles/undamped_elastoplastic.h"
 #include "solver/consistency.h"
+#include "solver/sweep/sweep_grid.h"
 #include "verification/cases.h"
 #include "verification/study_speed.h"
 #include "verification/support.h"
@@ -147,6 +148,63 @@ Outcome exact_capture_region() {
                  std::to_string(fired) + " of " + std::to_string(points) +
                      " grid impacts captured by the region; integrated on through the creep, "
                      "the largest rebound over its error bound is at " +
+                     where);
+}
+
+// Capture decided where unloading begins (impact_driver.h, capture_at_unloading), at the map's
+// own settings: the paper scene, elastoplastic, dop853 at rtol 1e-8 and the default atol 1e-12,
+// as `ivv sweep --rtol 1e-8` runs it, on an 8 x 8 grid over the captured part of the COR map
+// (v0 1.2 to 10 m/s, zeta 0.45 to 1). An impact captured at its maximum compression (the capture
+// event at the max_compression event's time) used to be decided one step later, at the end of
+// the first unloading step; only its step count and its energy ledger residual (the CSV's
+// energy_residual) can differ, e = 0, F_max, z_max, z_perm and alpha_max coming from the same
+// event. Each is integrated on without the region (exact_capture off, capture_cor 1e-15): its
+// rebound must stay within the integration error of e, 20 N (atol + 2 rtol) (consistency.h); and
+// its ledger residual within the same bound of m v0^2. Measured: the larger ratio to the bound
+// (<= 1 passes). A grid on which no impact is decided at maximum compression proves nothing:
+// that fails too.
+Outcome capture_at_maximum_compression() {
+  double worst = 0.0;
+  std::string where = "no capture at maximum compression";
+  int decided = 0, points = 0;
+  for (double v0 : log_grid(1.2, 10.0, 8)) {
+    for (double zeta : linear_grid(0.45, 1.0, 8)) {
+      SimulationRequest req =
+          request(with(paper_scene(), v0, zeta), LawKind::elastoplastic, IntegratorKind::dop853);
+      req.options.rtol = 1e-8;
+      const std::string at = "v0=" + fmt(v0) + " zeta=" + fmt(zeta);
+      ++points;
+      const ImpactResult r = simulate(req);
+      if (!r.ok()) return at_most(INFINITY, 1.0, at + ": " + r.reason);
+      if (r.status != ImpactStatus::captured || r.events.size() < 2) continue;
+      const ImpactEvent& last = r.events.back();
+      const ImpactEvent& before = r.events[r.events.size() - 2];
+      if (last.kind != EventKind::capture || before.kind != EventKind::max_compression ||
+          last.t != before.t)
+        continue;
+      ++decided;
+      const double bound = accumulated_error_bound(r.steps, req.options);
+      const double residual = std::abs(r.energy.residual) / (2.0 * r.energy.initial);
+      req.options.exact_capture = false;
+      req.options.capture_cor = 1e-15;
+      const ImpactResult on = simulate(req);
+      if (!on.ok()) return at_most(INFINITY, 1.0, at + " integrated on: " + on.reason);
+      const double on_bound = accumulated_error_bound(on.steps, req.options);
+      const double rebound = on.status == ImpactStatus::separated ? on.e / on_bound : 0.0;
+      const double ratio = std::max(rebound, residual / bound);
+      if (ratio >= worst) {
+        worst = ratio;
+        where = at + " (ledger residual " + fmt(residual) + " m v0^2, bound " + fmt(bound) +
+                "; integrated on: " + std::string(to_string(on.status)) + ", e = " + fmt(on.e) +
+                ", bound " + fmt(on_bound) + ")";
+      }
+    }
+  }
+  if (decided == 0) return at_most(INFINITY, 1.0, "no grid impact was captured at z_m");
+  return at_most(worst, 1.0,
+                 std::to_string(decided) + " of " + std::to_string(points) +
+                     " grid impacts captured at maximum compression; the largest of rebound "
+                     "(integrated on) and ledger residual over the error bound is at " +
                      where);
 }
 
@@ -326,6 +384,14 @@ void register_stability_cases(Registry& reg) {
            "the rebound of a run integrated through the creep is zero up to its integration "
            "error, bounded by 20 N (atol + 2 rtol) (consistency.h)",
            Cost::quick, exact_capture_region});
+  reg.add({"stability.capture-at-maximum-compression",
+           "Capture decided at maximum compression, at the map's tolerance: no rebound, ledger "
+           "closed",
+           Tier::stability,
+           "integrated on through the creep, the rebound is zero up to its integration error, "
+           "and the ledger residual of the earlier decision within the same bound, 20 N "
+           "(atol + 2 rtol) (consistency.h)",
+           Cost::quick, capture_at_maximum_compression});
   reg.add({"stability.linearized-outside-domain",
            "Linearized law below z_m = 2.25 z_y: every integrator stops with a clear error",
            Tier::stability, "all of them must say so: a NaN or a number would be silently wrong",

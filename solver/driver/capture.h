@@ -26,6 +26,10 @@
 //    maximum displacement; without a dashpot z = alpha, so z rises: the spring would reload). It
 //    failed to reach separation once and its energy is conserved: captured, e_bound =
 //    sqrt(2 max(E + allowance, 0)), the rebound the uncertainty in E could still hide.
+// "After an unloading step" includes the event that puts the law on its unloading branch
+// (maximum compression): each criterion is a property of one state on that branch, and the driver
+// asks them there first (impact_driver.h, capture_at_unloading), so an impact already inside the
+// region at z_m is not carried one step further.
 // Capture needs dissipation or a well: without either the unloading branch is conservative, the
 // rebound speed is sqrt(2 U(z_m)) > 0, and criteria 1 and 2 are not asked (a bound below
 // capture_cor there would be round-off in U, not physics).

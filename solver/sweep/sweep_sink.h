@@ -36,7 +36,8 @@ struct SweepCounts {
   std::size_t separated = 0, captured = 0, failed = 0;
   // rows per route and per integrator (the CSV's columns): what --model auto and
   // --integrator auto chose over the grid
-  std::map<std::string, std::size_t> routes, integrators;
+  // (std::less<>: a row's name is looked up as a string_view, with no string made for it)
+  std::map<std::string, std::size_t, std::less<>> routes, integrators;
 };
 
 struct SweepOutputOptions {
@@ -168,6 +169,7 @@ class SweepSink {
   std::size_t next_write_ = 0;  // first index not yet in the partial CSV
   std::size_t delivered_ = 0;
   std::map<std::size_t, std::string> pending_;  // finished, waiting for earlier points
+  bool wrote_ = false;  // record() wrote a row directly since write_ready() last notified
   SweepCounts counts_;
   std::FILE* journal_ = nullptr;
   std::FILE* partial_ = nullptr;
