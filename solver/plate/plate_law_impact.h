@@ -26,6 +26,7 @@
 #include "scene/scene.h"
 #include "solver/driver/event_locator.h"
 #include "solver/laws/law.h"
+#include "solver/plate/exponential_stepper.h"
 #include "solver/plate/odeint_dense_stepper.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/plate/plate_impact_driver.h"
@@ -140,6 +141,9 @@ void run_plate_driver(const Law& law, const Scales& k, const PlateModes& modes, 
       return;
     case PlateImpactOptions::Stepper::odeint_dopri5:
       PlateImpactDriver<Law, OdeintDenseDopri5<System>>(law, k, modes, m, opt).run(out);
+      return;
+    case PlateImpactOptions::Stepper::exponential:
+      PlateImpactDriver<Law, PlateExponentialStepper<System>>(law, k, modes, m, opt).run(out);
       return;
   }
 }
