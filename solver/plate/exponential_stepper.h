@@ -27,7 +27,7 @@
 // A(j, i) F_i, are P scalar equations: A(j, i) = -t_j^2 sum_n V(n, i) theta_j^n (s_n(0) +
 // sum_k g_k s_n(omega_k t_j)) depends on h only, summed over the modes ONCE per step size. So the
 // steps lie on a ladder h = 2^-j (normalised time) and each rung caches its tables (per mode:
-// cos, sin of omega h and omega h/Q, and the end-state rows; reduced: A and the forced z_kin
+// cos, sin of omega h and omega h/Q, and g_k s_n(omega_k h); reduced: A and the forced z_kin
 // and rate at the Q probes); a step costs O(N (P + Q)) flops (the free motion at the probes by
 // rotation, the end update) and a Newton solve of P unknowns, Jacobian I - diag(f'(z_j)) (A - C_res
 // I).
@@ -184,14 +184,18 @@ class PlateExponentialStepper {
 
  private:
   using Row = std::array<double, P + 1>;  // one value per nodal force F_0 .. F_P
+  // sum_k g_k omega_k^(2m), m = 0 .. kMoments - 1, over a prefix of the modes (by omega)
+  static constexpr int kMoments = 24;
+  using Moments = std::array<double, kMoments>;
   struct Modes {
-    std::vector<double> omega, inv_omega, gain;
+    std::vector<double> omega, inv_omega, gain;  // by increasing omega (plate_modes.h)
+    std::vector<Moments> moments;                // moments[K]: over the modes k < K
     double compliance = 0.0;
   };
   struct Rung {
     double h = 0.0;
-    std::vector<double> cos_h, sin_h, cos_q, sin_q;        // per mode: omega h, omega h/Q
-    std::vector<Row> end_u, end_v;                         // per mode: g_k times the end rows
+    std::vector<double> cos_h, sin_h, cos_q, sin_q;  // per mode: omega h, omega h/Q
+    std::vector<std::array<double, P + 2>> end_w;    // per mode: g_k s_n(omega_k h), n = -1 .. P
     std::array<Row, kProbes + 1> probe_z{}, probe_rate{};  // forced z_kin, rate at t = q h/Q
     Row alpha_end{}, alpha_rate_end{}, w_end{}, w_rate_end{};
   };
@@ -203,10 +207,16 @@ class PlateExponentialStepper {
   }
   void bind(const System& sys) {
     modes_ = {};
+    modes_.moments.assign(1, Moments{});
     for (std::size_t k = 0; k < sys.modes(); ++k) {
-      modes_.omega.push_back(sys.omega(k));
-      modes_.inv_omega.push_back(1.0 / sys.omega(k));
+      const double om = sys.omega(k);
+      modes_.omega.push_back(om);
+      modes_.inv_omega.push_back(1.0 / om);
       modes_.gain.push_back(sys.gain(k));
+      Moments next = modes_.moments.back();
+      double p = sys.gain(k);
+      for (double& m : next) m += p, p *= om * om;
+      modes_.moments.push_back(next);
     }
     modes_.compliance = sys.compliance();
     rungs_.clear();
@@ -250,7 +260,7 @@ auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
   r.h = rung_step(j);
   const std::size_t N = modes_.omega.size();
   r.cos_h.resize(N), r.sin_h.resize(N), r.cos_q.resize(N), r.sin_q.resize(N);
-  r.end_u.resize(N), r.end_v.resize(N);
+  r.end_w.resize(N);
   std::array<double, P + 2> s{}, s0{};
   duhamel_weights<P>(0.0, 1.0, 0.0, s0);
   auto rows = [&](const std::array<double, P + 2>& w, double g, double t, Row& du, Row& dv) {
@@ -265,15 +275,15 @@ auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
     }
   };
   rows(s0, -1.0, r.h, r.alpha_end, r.alpha_rate_end);
-  r.w_end.fill(0.0), r.w_rate_end.fill(0.0);
+  std::array<double, P + 2> sum{};  // sum_k g_k s_n(omega_k h)
   for (std::size_t k = 0; k < N; ++k) {
     const double x = modes_.omega[k] * r.h;
     r.cos_h[k] = std::cos(x), r.sin_h[k] = std::sin(x);
     r.cos_q[k] = std::cos(x / kProbes), r.sin_q[k] = std::sin(x / kProbes);
     duhamel_weights<P>(x, r.cos_h[k], r.sin_h[k], s);
-    rows(s, modes_.gain[k], r.h, r.end_u[k], r.end_v[k]);
-    for (int i = 0; i <= P; ++i) r.w_end[i] += r.end_u[k][i], r.w_rate_end[i] += r.end_v[k][i];
+    for (int n = 0; n < P + 2; ++n) r.end_w[k][n] = modes_.gain[k] * s[n], sum[n] += r.end_w[k][n];
   }
+  rows(sum, 1.0, r.h, r.w_end, r.w_rate_end);
   build_probe_rows(r);
   return r;
 }
@@ -286,14 +296,36 @@ void PlateExponentialStepper<System, P>::build_probe_rows(Rung& r) const {
   std::array<std::array<double, P + 2>, kProbes + 1> G{};
   duhamel_weights<P>(0.0, 1.0, 0.0, G[0]);
   for (int q = 1; q <= kProbes; ++q) G[q] = G[0];
+  // the modes with omega t < kSeriesBelow at probe q by their series over the moments: no
+  // per-mode work (the same terms as duhamel_weights' series, summed over the modes first)
+  for (int q = 1; q <= kProbes; ++q) {
+    const double t = r.h * q / kProbes;
+    const auto K = static_cast<std::size_t>(
+        std::lower_bound(modes_.omega.begin(), modes_.omega.end(), kSeriesBelow / t) -
+        modes_.omega.begin());
+    const Moments& mom = modes_.moments[K];
+    for (int n = -1; n <= P; ++n) {
+      double term = n < 0 ? 1.0 : 1.0 / ((n + 1.0) * (n + 2.0)), sum = term * mom[0], tp = 1.0;
+      for (int m = 1; m < kMoments; ++m) {
+        const double a = n < 0 ? 2.0 * m : n + 1.0 + 2.0 * m;
+        term *= -1.0 / (a * (a + 1.0));
+        tp *= t * t;
+        sum += term * tp * mom[static_cast<std::size_t>(m)];
+      }
+      G[q][static_cast<std::size_t>(n + 1)] += sum;
+    }
+  }
   std::array<double, P + 2> s{};
   for (std::size_t k = 0; k < N; ++k) {
     double c = 1.0, sn = 0.0;
+    const double om = modes_.omega[k];
     for (int q = 1; q <= kProbes; ++q) {
       const double cq = c * r.cos_q[k] - sn * r.sin_q[k];
       sn = sn * r.cos_q[k] + c * r.sin_q[k];
       c = cq;
-      duhamel_weights<P>(modes_.omega[k] * r.h * q / kProbes, c, sn, s);
+      const double x = om * (r.h * q / kProbes);
+      if (x < kSeriesBelow) continue;  // in the moments' sum above
+      duhamel_weights<P>(x, c, sn, s);
       for (int n = 0; n < P + 2; ++n) G[q][n] += modes_.gain[k] * s[n];
     }
   }
@@ -436,11 +468,22 @@ double PlateExponentialStepper<System, P>::error_norm(const Rung& r) const {
 template <class System, int P>
 void PlateExponentialStepper<System, P>::advance(const Rung& r) {
   const std::size_t N = modes_.omega.size();
+  for (int n = 0; n <= P; ++n) {
+    double c = 0.0;
+    for (int i = 0; i <= P; ++i) c += V_[n][i] * F_[i];
+    coeff_[n] = c;
+  }
+  std::array<double, P + 2> cu{}, cv{};  // the forced end state = h^2 sum cu w, h sum cv w
+  cv[0] = coeff_[0];
+  for (int n = 0; n <= P; ++n) cu[n + 1] = r.h * r.h * coeff_[n];
+  for (int n = 1; n <= P; ++n) cv[n] = n * coeff_[n];
+  for (int n = 0; n <= P; ++n) cv[n] *= r.h;
   trial_.resize(x0_.size());
   for (std::size_t k = 0; k < N; ++k) {
     const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k], om = modes_.omega[k];
+    const auto& w = r.end_w[k];
     double fu = 0.0, fv = 0.0;
-    for (int i = 0; i <= P; ++i) fu += r.end_u[k][i] * F_[i], fv += r.end_v[k][i] * F_[i];
+    for (int n = 0; n < P + 2; ++n) fu += cu[n] * w[n], fv += cv[n] * w[n];
     trial_[2 + 2 * k] = u * r.cos_h[k] + v * modes_.inv_omega[k] * r.sin_h[k] + fu;
     trial_[3 + 2 * k] = -u * om * r.sin_h[k] + v * r.cos_h[k] + fv;
   }
@@ -452,11 +495,6 @@ void PlateExponentialStepper<System, P>::advance(const Rung& r) {
     double z = free_z_[q], v = free_rate_[q];
     for (int i = 0; i <= P; ++i) z += r.probe_z[q][i] * F_[i], v += r.probe_rate[q][i] * F_[i];
     probe_z_[q] = z, probe_rate_[q] = v;
-  }
-  for (int n = 0; n <= P; ++n) {
-    double c = 0.0;
-    for (int i = 0; i <= P; ++i) c += V_[n][i] * F_[i];
-    coeff_[n] = c;
   }
   h_ = r.h;
   t1_ = t0_ + r.h;
