@@ -102,9 +102,10 @@ struct PlateImpactOptions {
   double truncation_tol = 0.0;
   std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
   bool residual = true;           // false: drop C_res (plain truncation, for the convergence study)
-  // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h), or
-  // Boost.Odeint's dense dopri5 (a second integrator for the same equations).
-  enum class Stepper { dop853, odeint_dopri5 };
+  // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h),
+  // Boost.Odeint's dense dopri5 (a second integrator for the same equations), or the exponential
+  // collocation of exponential_stepper.h (the modes advanced exactly for a polynomial force).
+  enum class Stepper { dop853, odeint_dopri5, exponential };
   Stepper stepper = Stepper::dop853;
   int max_contacts = 10000;
   bool record_force = false;    // fill PlateImpactResult::force_history (for plots)

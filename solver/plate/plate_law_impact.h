@@ -1,7 +1,9 @@
 // A finite-plate impact (plate_impact.h) of any rate-independent contact law given as a C++ object:
-// an expression law, a law of a user, or a built-in law. The same model, modes, cut-off and
-// driver as simulate_plate_impact(scene, LawKind, ...): for a built-in law the two give the same
-// result (plate_law_test.cc holds them to it, mode count included).
+// an expression law, a law of a user, or a built-in law. simulate_plate_impact(scene, LawKind,
+// ...) is this path for the built-in law of that kind: one setup per scene (the plate, the scales,
+// omega_s, C_static; detail::plate_setup), one run per cut-off (detail::plate_impact_at_cutoff),
+// one choice of the stepper (detail::run_plate_driver). plate_law_test.cc holds the two front
+// doors to the same result, mode count included.
 //
 // The law must model ContactLaw (solver/laws/law.h), be rate-independent (the plate's contact
 // force solves F = f(z_kin - C_res F) at zdot = 0) and clamp its force at F >= 0 (contacts end at
@@ -17,12 +19,14 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "scene/input_error.h"
 #include "scene/scene.h"
 #include "solver/driver/event_locator.h"
 #include "solver/laws/law.h"
+#include "solver/plate/exponential_stepper.h"
 #include "solver/plate/odeint_dense_stepper.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/plate/plate_impact_driver.h"
@@ -101,20 +105,93 @@ void require_plate_law(const Law& law, const Scene& scene) {
 
 namespace detail {
 
-// The cut-off omega_s of plate_impact.cc: max(1/T, sqrt(k_H g_max)) (plate_impact.h).
+// What the runs of one impact at different cut-offs share, computed once per scene: the plate,
+// the law's scales, the rate omega_s the cut-off multiplies (plate_impact.h: max(1/T,
+// sqrt(k_H g_max))) and C_static.
+struct PlateSetup {
+  FinitePlate plate;
+  Scales scales;
+  double omega_s = 0.0;  // [rad/s]
+  StaticCompliance static_compliance;
+};
+
 template <class Law>
-double plate_omega_s(const Scene& scene, const DerivedParameters& p, const FinitePlate& plate) {
-  const Scales k = scales(scene, p, plate_scale_basis<Law>(p));
+PlateSetup plate_setup(const Scene& scene, const DerivedParameters& p) {
+  PlateSetup s{finite_plate(scene.damping.structure, scene.target_youngs_modulus,
+                            scene.target_poisson_ratio),
+               scales(scene, p, plate_scale_basis<Law>(p)),
+               0.0,
+               {}};
   const double z_mH =
       std::pow(5.0 * p.effective_mass * scene.velocity * scene.velocity / (4.0 * p.K_h), 0.4);
   const double k_H = 1.5 * p.K_h * std::sqrt(z_mH);
-  return std::max(1.0 / k.time, std::sqrt(k_H * 4.0 / plate.mass()));
+  s.omega_s = std::max(1.0 / s.scales.time, std::sqrt(k_H * 4.0 / s.plate.mass()));
+  s.static_compliance = plate_static_compliance(s.plate);
+  return s;
 }
 
+// The driver on the stepper opt.stepper names: the one place a plate run chooses its stepper.
 template <class Law>
-PlateImpactResult plate_impact_at_cutoff(const Law& law, const Scene& scene,
+void run_plate_driver(const Law& law, const Scales& k, const PlateModes& modes, double m,
+                      const PlateImpactOptions& opt, PlateImpactResult& out) {
+  using System = PlateSystem<Law>;
+  switch (opt.stepper) {
+    case PlateImpactOptions::Stepper::dop853:
+      PlateImpactDriver<Law, Dop853Stepper<System>>(law, k, modes, m, opt).run(out);
+      return;
+    case PlateImpactOptions::Stepper::odeint_dopri5:
+      PlateImpactDriver<Law, OdeintDenseDopri5<System>>(law, k, modes, m, opt).run(out);
+      return;
+    case PlateImpactOptions::Stepper::exponential:
+      PlateImpactDriver<Law, PlateExponentialStepper<System>>(law, k, modes, m, opt).run(out);
+      return;
+  }
+}
+
+// One impact at the cut-off `cutoff` (multiples of omega_s; 0: no modes, static compliance).
+template <class Law>
+PlateImpactResult plate_impact_at_cutoff(const Law& law, const PlateSetup& setup,
                                          const DerivedParameters& p, const PlateImpactOptions& opt,
-                                         double cutoff);
+                                         double cutoff) {
+  PlateModes modes;
+  if (cutoff == 0.0) {
+    modes = static_plate_modes(setup.plate);
+  } else {
+    PlateModeOptions mo;
+    mo.omega_cut = cutoff * setup.omega_s;
+    mo.max_modes = opt.max_modes;
+    mo.static_compliance = setup.static_compliance;
+    modes = plate_modes(setup.plate, mo);
+  }
+  PlateImpactResult out;
+  out.mode_count = modes.modes.size();
+  out.cutoff = cutoff;
+  out.omega_cut = modes.omega_cut;
+  out.static_compliance = modes.static_compliance.value;
+  out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
+  out.plate_mass = setup.plate.mass();
+  catching_plate_failures(out, [&] {
+    if constexpr (!Law::rate_dependent)
+      run_plate_driver(law, setup.scales, modes, p.effective_mass, opt, out);
+    close_plate_ledger(law, out);
+  });
+  return out;
+}
+
+// The impact at opt.cutoff, or with opt.truncation_tol > 0 at the cut-off the rule of
+// plate_truncation.h chooses for it.
+template <class Law>
+PlateImpactResult plate_impact(const Law& law, const Scene& scene, const DerivedParameters& p,
+                               const PlateImpactOptions& opt) {
+  if (!(opt.truncation_tol >= 0.0 && std::isfinite(opt.truncation_tol)))
+    throw std::invalid_argument("PlateImpactOptions::truncation_tol must be finite and >= 0");
+  const PlateSetup setup = plate_setup<Law>(scene, p);
+  if (!(opt.truncation_tol > 0.0 && opt.cutoff > 0.0))
+    return plate_impact_at_cutoff(law, setup, p, opt, opt.cutoff);
+  return run_to_truncation_tolerance(
+      opt, [&](double c) { return plate_impact_at_cutoff(law, setup, p, opt, c); },
+      [&](double c) { return count_plate_modes(setup.plate, c * setup.omega_s); });
+}
 
 }  // namespace detail
 
@@ -126,48 +203,7 @@ PlateImpactResult simulate_plate_impact_of(const Law& law, const Scene& scene,
   static_assert(assert_contact_law<Law, double>());
   validate(scene);
   require_plate_law(law, scene);
-  const DerivedParameters p = derive(scene);
-  if (!(opt.truncation_tol > 0.0 && opt.cutoff > 0.0))
-    return detail::plate_impact_at_cutoff(law, scene, p, opt, opt.cutoff);
-  const FinitePlate plate = finite_plate(scene.damping.structure, scene.target_youngs_modulus,
-                                         scene.target_poisson_ratio);
-  const double omega_s = detail::plate_omega_s<Law>(scene, p, plate);
-  return run_to_truncation_tolerance(
-      opt, [&](double c) { return detail::plate_impact_at_cutoff(law, scene, p, opt, c); },
-      [&](double c) { return count_plate_modes(plate, c * omega_s); });
-}
-
-// One impact at the cut-off `cutoff` (multiples of omega_s; 0: no modes, static compliance).
-template <class Law>
-PlateImpactResult detail::plate_impact_at_cutoff(const Law& law, const Scene& scene,
-                                                 const DerivedParameters& p,
-                                                 const PlateImpactOptions& opt, double cutoff) {
-  const Scales k = scales(scene, p, detail::plate_scale_basis<Law>(p));
-  const FinitePlate plate = finite_plate(scene.damping.structure, scene.target_youngs_modulus,
-                                         scene.target_poisson_ratio);
-  const double omega_s = plate_omega_s<Law>(scene, p, plate);
-  const PlateModes modes = cutoff == 0.0 ? static_plate_modes(plate)
-                                         : plate_modes(plate, {cutoff * omega_s, opt.max_modes});
-  PlateImpactResult out;
-  out.mode_count = modes.modes.size();
-  out.cutoff = cutoff;
-  out.omega_cut = modes.omega_cut;
-  out.static_compliance = modes.static_compliance.value;
-  out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
-  out.plate_mass = plate.mass();
-  catching_plate_failures(out, [&] {
-    if constexpr (!Law::rate_dependent) {
-      using System = PlateSystem<Law>;
-      if (opt.stepper == PlateImpactOptions::Stepper::dop853)
-        PlateImpactDriver<Law, Dop853Stepper<System>>(law, k, modes, p.effective_mass, opt)
-            .run(out);
-      else
-        PlateImpactDriver<Law, OdeintDenseDopri5<System>>(law, k, modes, p.effective_mass, opt)
-            .run(out);
-    }
-    detail::close_plate_ledger(law, out);
-  });
-  return out;
+  return detail::plate_impact(law, scene, derive(scene), opt);
 }
 
 }  // namespace ivv

@@ -1,0 +1,628 @@
+// Exponential collocation for the plate impact (plate_impact.h): the modes and the impactor are
+// advanced EXACTLY for a contact force that is a polynomial over the step, so the step is set by
+// the smoothness of the force, not by the highest kept mode (an explicit Runge-Kutta method needs
+// omega_max h <~ 5, its cost grows as the cut-off cubed).
+//
+// Equations (normalised, plate_system.h): alpha'' = -F, u_k'' + omega_k^2 u_k = g_k F, and the one
+// nonlinearity, the scalar F = f(z_kin - C_res F), z_kin = alpha - sum_k u_k. On a step
+// [t0, t0 + h] the force is replaced by its interpolating polynomial of degree P through the
+// equispaced nodes theta_j = j/P (t = t0 + theta h), P(theta) = sum_i F_i l_i(theta), F_0 known
+// (the force is continuous), F_1 .. F_P unknown. Each mode's response is then exact (Duhamel):
+//   u(t) = u0 cos(omega t) + u0'/omega sin(omega t) + g sum_n c_n n! h^-n S_n(t),
+// c_n the monomial coefficients of P in theta and S_n the response to s^n/n! from rest,
+//   S_n(t) = t^(n+2) s_n(omega t)/n!,   s_n(x) = n! sum_k (-1)^k x^(2k)/(n + 2 + 2k)!,
+// in closed form x^2 s_0 = 1 - cos x, x^2 s_1 = 1 - sin(x)/x, x^2 s_n = 1 - n (n-1) s_(n-2)
+// (S_n'' = S_(n-2) and S_n'' + omega^2 S_n = t^n/n!); the forward recurrence is used for
+// x >= kSeriesBelow (its error amplification prod n(n-1)/x^2 <= 1.3 there for P = 8); below it
+// s_P and s_(P-1) come from the series (terms falling by x^2/((P+3)(P+4)) <= 0.12) and the rest
+// from the recurrence run downwards, which damps errors by x^2/(n(n-1)) (x s_(-1) = sin x last,
+// from x^2 s_1 = 1 - s_(-1)). The velocity is the same with S_(n-1) (S_n' = S_(n-1), S_(-1) =
+// sin(omega t)/omega). The impactor is the case omega = 0, g = -1. This is the exponential
+// collocation method of Hochbruck & Ostermann, Exponential integrators, Acta Numerica 19:209
+// (2010), §2.3, applied to the one scalar that is not linear: equivalently, collocation for the
+// Volterra equation F = f(z_free - int K F) (Brunner, Collocation Methods for Volterra Integral and
+// Related Functional Equations, 2004, ch. 2).
+//
+// The collocation equations F_j = f(z_j - C_res F_j), z_j = z_kin(theta_j) = zfree_j + sum_i
+// A(j, i) F_i, are P scalar equations: A(j, i) = -t_j^2 sum_n V(n, i) theta_j^n (s_n(0) +
+// sum_k g_k s_n(omega_k t_j)) depends on h only, summed over the modes ONCE per step size. So the
+// steps lie on a ladder h = 2^-j (normalised time) and each rung caches its tables (per mode:
+// cos, sin of omega h and omega h/Q, and g_k s_n(omega_k h); reduced: A and the forced z_kin
+// and rate at the Q probes); a step costs O(N (P + Q)) flops (the free motion at the probes by
+// rotation, the end update) and a Newton solve of P unknowns, Jacobian I - diag(f'(z_j)) (A - C_res
+// I).
+//
+// Error control: the embedded solution is the degree-(P-1) polynomial through nodes 0 .. P-1 of
+// the same converged F; it differs from the full one by d_P = F_P - (its extrapolation to node
+// P), the P-th difference of the nodal forces, less its rounding floor 2^P (the nodes' rounding:
+// 64 eps f' |z| / (1 + f' C_res), z's scale |alpha| + |alpha' h| + sum |u_k|). The difference of
+// the end state (alpha, alpha', w = sum u_k, w') is d_P times the rung's end rows of the last
+// basis function, weighted by atol + rtol max(|old|, |new|) per component, max norm. For a smooth
+// force that is O(h^(P+1)), so the next rung follows 0.9 err^(-1/(P+1)), clamped to [1/4, 4] (at
+// most two rungs at a time), no growth after a rejection. The method itself is of order ~P + 2
+// at the step ends (nine equispaced nodes integrate like Newton-Cotes' nine-point rule, exact to
+// degree 9; measured order 11.4 in exponential_stepper_test.cc), so the estimate is conservative:
+// on the shipped scenes at rtol 1e-8 e is within 1e-10 of DOP853 at rtol 1e-12. It is also
+// sensitive to modes that ring in F faster than the step resolves (the P-th difference grows
+// them by up to 2^P while their effect on the state falls as 1/omega): that, not the highest
+// mode's stability, is what bounds the step on a plate. Onsets (F ~ t^(3/2) for Hertz) and
+// separations (F clamped at 0) are not polynomial: the estimate rejects there and the step
+// shrinks; the events are located by the driver. A Newton solve that does not converge in
+// kNewtonIterations (to 1e-14 of F or the rounding floor) is a rejected step (four times
+// smaller); a step below 1e-14 (1 + |t|) is StepFailure::step_underflow, and kMaxRejections
+// rejections in a row StepFailure::attempts_exhausted: never a silent step.
+//
+// Dense output is exact for the polynomial force: interpolate() evaluates the Duhamel formula at
+// any t (O(N) trigonometric calls); event_gap(t) gives z_kin and its rate, from the step's
+// tables at the Q = 2P equispaced probes the event locator samples (the nodes and the midpoints
+// between them, t0 + k (t1 - t0)/Q, recognised by their exact value; the driver asks for Q
+// probes, kProbes) and by the same formula elsewhere, so every value the locator sees is the
+// stepper's solution (the state interpolated at a located event is on the same side of it).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "solver/steppers/step_result.h"
+
+namespace ivv {
+
+// Below this omega h the weights s_n come from their series (header).
+inline constexpr double kSeriesBelow = 4.0;
+
+// s_(-1)(x) = sin(x)/x, then s_0(x) ... s_P(x) of the header, into s[0 .. P+1]; c, sn = cos x,
+// sin x (read only for x >= kSeriesBelow).
+template <int P>
+void duhamel_weights(double x, double c, double sn, std::array<double, P + 2>& s) {
+  const double x2 = x * x;
+  if (x < kSeriesBelow) {  // s_P, s_(P-1) by their series, then down: stable for x^2 < n(n-1)
+    for (int n = P - 1; n <= P; ++n) {
+      double term = 1.0 / ((n + 1.0) * (n + 2.0)), sum = term;
+      for (int k = 0; k < 60 && std::abs(term) > 1e-18 * std::abs(sum); ++k) {
+        const double a = n + 3.0 + 2.0 * k;
+        term *= -x2 / (a * (a + 1.0));
+        sum += term;
+      }
+      s[static_cast<std::size_t>(n + 1)] = sum;
+    }
+    for (int n = P; n >= 2; --n)
+      s[static_cast<std::size_t>(n - 1)] =
+          (1.0 - x2 * s[static_cast<std::size_t>(n + 1)]) / (n * (n - 1.0));
+    s[0] = 1.0 - x2 * s[2];  // x^2 s_1 = 1 - s_(-1)
+    return;
+  }
+  const double r2 = 1.0 / x2;
+  s[0] = sn / x;
+  s[1] = (1.0 - c) * r2;
+  s[2] = (1.0 - s[0]) * r2;
+  for (int n = 2; n <= P; ++n)
+    s[static_cast<std::size_t>(n + 1)] =
+        (1.0 - n * (n - 1.0) * s[static_cast<std::size_t>(n - 1)]) * r2;
+}
+
+// The monomial coefficients V(n, i) of the Lagrange basis l_i(theta) = sum_n V(n, i) theta^n on
+// the nodes theta_j = j/P, by expanding the products (exact rational inputs, no Vandermonde solve).
+template <int P>
+std::array<std::array<double, P + 1>, P + 1> lagrange_monomials() {
+  std::array<std::array<double, P + 1>, P + 1> V{};
+  for (int i = 0; i <= P; ++i) {
+    std::array<double, P + 1> poly{};  // coefficients of prod_{m != i} (theta - m/P)/((i - m)/P)
+    poly[0] = 1.0;
+    int deg = 0;
+    for (int m = 0; m <= P; ++m) {
+      if (m == i) continue;
+      const double scale = static_cast<double>(P) / (i - m), root = static_cast<double>(m) / P;
+      for (int d = deg + 1; d >= 0; --d)
+        poly[static_cast<std::size_t>(d)] =
+            scale * ((d > 0 ? poly[static_cast<std::size_t>(d - 1)] : 0.0) -
+                     root * poly[static_cast<std::size_t>(d)]);
+      ++deg;
+    }
+    for (int n = 0; n <= P; ++n)
+      V[static_cast<std::size_t>(n)][static_cast<std::size_t>(i)] =
+          poly[static_cast<std::size_t>(n)];
+  }
+  return V;
+}
+
+template <class System, int P = 8>
+class PlateExponentialStepper {
+  static_assert(P % 2 == 0 && P >= 2, "the embedded solution uses every second node");
+
+ public:
+  using state_type = std::vector<double>;
+  static constexpr std::string_view name = "exponential";
+  // The event locator's probes: the nodes and the midpoints between them (header); the tables
+  // serve both.
+  static constexpr int kProbesPerNode = 2;
+  static constexpr int kProbes = kProbesPerNode * P;
+  static constexpr int kNewtonIterations = 30;
+  static constexpr int kMaxRejections = 60;
+  static constexpr double kEstimateOrder = P + 1.0;
+  static constexpr double kEps = 2.220446049250313e-16;
+
+  PlateExponentialStepper(double rtol, double atol, double initial_dt)
+      : rtol_(rtol), atol_(atol), first_rung_(rung_at_or_below(initial_dt)) {}
+
+  void start(const System& sys, double t, const state_type& x) {
+    if (modes_.omega.size() != sys.modes()) bind(sys);
+    t0_ = t1_ = t;
+    x0_ = x1_ = x;
+    F_start_ = sys.force(z_kin(x));
+    if (F_start_ == 0.0 || rung_ < 0) rung_ = first_rung_;  // an onset: F ~ t^(3/2), start small
+    grow_ok_ = true;
+  }
+
+  // No error control: every step is h = 2^-rung (convergence studies; a collocation that does
+  // not converge is then a failed step, StepFailure::attempts_exhausted).
+  void fix_step(int rung) { fixed_rung_ = rung; }
+
+  StepResult step(const System& sys);
+  void interpolate(const System& sys, double t, state_type& out) const;
+  // {z_kin, z_kin'} at t in [t0, t1] (header).
+  std::array<double, 2> event_gap(double t) const;
+
+  double t0() const { return t0_; }
+  double t1() const { return t1_; }
+  const state_type& x0() const { return x0_; }
+  const state_type& x1() const { return x1_; }
+  long steps() const { return steps_; }
+  long rejected() const { return rejected_; }
+  long rungs_built() const { return static_cast<long>(rungs_.size()); }
+
+  // The step size of rung j: 2^-j (normalised time).
+  static double rung_step(int j) { return std::ldexp(1.0, -j); }
+  static int rung_at_or_below(double h) {
+    return static_cast<int>(std::ceil(-std::log2(std::max(h, 1e-300))));
+  }
+
+ private:
+  using Row = std::array<double, P + 1>;  // one value per nodal force F_0 .. F_P
+  // sum_k g_k omega_k^(2m), m = 0 .. kMoments - 1, over a prefix of the modes (by omega)
+  static constexpr int kMoments = 24;
+  using Moments = std::array<double, kMoments>;
+  struct Modes {
+    std::vector<double> omega, inv_omega, gain;  // by increasing omega (plate_modes.h)
+    std::vector<Moments> moments;                // moments[K]: over the modes k < K
+    double compliance = 0.0;
+  };
+  struct Rung {
+    double h = 0.0;
+    std::vector<double> cos_h, sin_h, cos_q, sin_q;  // per mode: omega h, omega h/Q
+    std::vector<std::array<double, P + 2>> end_w;    // per mode: g_k s_n(omega_k h), n = -1 .. P
+    std::array<Row, kProbes + 1> probe_z{}, probe_rate{};  // forced z_kin, rate at t = q h/Q
+    Row alpha_end{}, alpha_rate_end{}, w_end{}, w_rate_end{};
+  };
+
+  static double z_kin(const state_type& x) {
+    double w = 0.0;
+    for (std::size_t i = 2; i + 1 < x.size(); i += 2) w += x[i];
+    return x[0] - w;
+  }
+  void bind(const System& sys) {
+    modes_ = {};
+    modes_.moments.assign(1, Moments{});
+    for (std::size_t k = 0; k < sys.modes(); ++k) {
+      const double om = sys.omega(k);
+      modes_.omega.push_back(om);
+      modes_.inv_omega.push_back(1.0 / om);
+      modes_.gain.push_back(sys.gain(k));
+      Moments next = modes_.moments.back();
+      double p = sys.gain(k);
+      for (double& m : next) m += p, p *= om * om;
+      modes_.moments.push_back(next);
+    }
+    modes_.compliance = sys.compliance();
+    rungs_.clear();
+  }
+  const Rung& rung(int j);
+  void build_probe_rows(Rung& r) const;
+  void free_motion(const Rung& r);
+  bool solve_collocation(const System& sys, const Rung& r);
+  double error_norm(const Rung& r) const;
+  void advance(const Rung& r);
+  // {z_kin, rate} at theta of the current step by the Duhamel formula (O(N) trigonometry).
+  std::array<double, 2> gap_at(double theta) const;
+
+  inline static const std::array<std::array<double, P + 1>, P + 1> V_ = lagrange_monomials<P>();
+
+  double rtol_, atol_;
+  int first_rung_;
+  int rung_ = -1;
+  int fixed_rung_ = -1;  // >= 0: fix_step()
+  bool grow_ok_ = true;
+  Modes modes_;
+  std::map<int, Rung> rungs_;
+  double t0_ = 0.0, t1_ = 0.0, h_ = 0.0;
+  state_type x0_, x1_, trial_;
+  double z_magnitude_ = 0.0;
+  double noise_ = 0.0;  // the largest nodal force's rounding floor (solve_collocation)  // |alpha|
+                        // + |alpha' h| + sum |u_k|: z_kin's rounding scale
+  double F_start_ = 0.0;  // the force at x1 (the next step's F_0)
+  Row F_{};               // nodal forces of the current (last accepted) step
+  Row coeff_{};           // its monomial coefficients c_n
+  std::array<double, kProbes + 1> free_z_{}, free_rate_{};    // free motion at the probes
+  std::array<double, kProbes + 1> probe_z_{}, probe_rate_{};  // z_kin, rate there (accepted)
+  long steps_ = 0, rejected_ = 0;
+};
+
+// The rung's tables (header), built at its first use.
+template <class System, int P>
+auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
+  if (auto it = rungs_.find(j); it != rungs_.end()) return it->second;
+  Rung& r = rungs_[j];
+  r.h = rung_step(j);
+  const std::size_t N = modes_.omega.size();
+  r.cos_h.resize(N), r.sin_h.resize(N), r.cos_q.resize(N), r.sin_q.resize(N);
+  r.end_w.resize(N);
+  std::array<double, P + 2> s{}, s0{};
+  duhamel_weights<P>(0.0, 1.0, 0.0, s0);
+  auto rows = [&](const std::array<double, P + 2>& w, double g, double t, Row& du, Row& dv) {
+    for (int i = 0; i <= P; ++i) {
+      double u = 0.0, v = V_[0][i] * w[0];
+      for (int n = 0; n <= P; ++n) {
+        u += V_[n][i] * w[n + 1];
+        if (n > 0) v += n * V_[n][i] * w[n];
+      }
+      du[i] = g * t * t * u;
+      dv[i] = g * t * v;
+    }
+  };
+  rows(s0, -1.0, r.h, r.alpha_end, r.alpha_rate_end);
+  std::array<double, P + 2> sum{};  // sum_k g_k s_n(omega_k h)
+  for (std::size_t k = 0; k < N; ++k) {
+    const double x = modes_.omega[k] * r.h;
+    r.cos_h[k] = std::cos(x), r.sin_h[k] = std::sin(x);
+    r.cos_q[k] = std::cos(x / kProbes), r.sin_q[k] = std::sin(x / kProbes);
+    duhamel_weights<P>(x, r.cos_h[k], r.sin_h[k], s);
+    for (int n = 0; n < P + 2; ++n) r.end_w[k][n] = modes_.gain[k] * s[n], sum[n] += r.end_w[k][n];
+  }
+  rows(sum, 1.0, r.h, r.w_end, r.w_rate_end);
+  build_probe_rows(r);
+  return r;
+}
+
+// probe_z(q, i), probe_rate(q, i): the forced z_kin and its rate at t = q h/Q per unit F_i,
+// summed over the modes (G_n = s_n(0) + sum_k g_k s_n(omega_k t) first, then the basis).
+template <class System, int P>
+void PlateExponentialStepper<System, P>::build_probe_rows(Rung& r) const {
+  const std::size_t N = modes_.omega.size();
+  std::array<std::array<double, P + 2>, kProbes + 1> G{};
+  duhamel_weights<P>(0.0, 1.0, 0.0, G[0]);
+  for (int q = 1; q <= kProbes; ++q) G[q] = G[0];
+  // the modes with omega t < kSeriesBelow at probe q by their series over the moments: no
+  // per-mode work (the same terms as duhamel_weights' series, summed over the modes first)
+  for (int q = 1; q <= kProbes; ++q) {
+    const double t = r.h * q / kProbes;
+    const auto K = static_cast<std::size_t>(
+        std::lower_bound(modes_.omega.begin(), modes_.omega.end(), kSeriesBelow / t) -
+        modes_.omega.begin());
+    const Moments& mom = modes_.moments[K];
+    for (int n = -1; n <= P; ++n) {
+      double term = n < 0 ? 1.0 : 1.0 / ((n + 1.0) * (n + 2.0)), sum = term * mom[0], tp = 1.0;
+      for (int m = 1; m < kMoments; ++m) {
+        const double a = n < 0 ? 2.0 * m : n + 1.0 + 2.0 * m;
+        term *= -1.0 / (a * (a + 1.0));
+        tp *= t * t;
+        sum += term * tp * mom[static_cast<std::size_t>(m)];
+      }
+      G[q][static_cast<std::size_t>(n + 1)] += sum;
+    }
+  }
+  std::array<double, P + 2> s{};
+  for (std::size_t k = 0; k < N; ++k) {
+    double c = 1.0, sn = 0.0;
+    const double om = modes_.omega[k];
+    for (int q = 1; q <= kProbes; ++q) {
+      const double cq = c * r.cos_q[k] - sn * r.sin_q[k];
+      sn = sn * r.cos_q[k] + c * r.sin_q[k];
+      c = cq;
+      const double x = om * (r.h * q / kProbes);
+      if (x < kSeriesBelow) continue;  // in the moments' sum above
+      duhamel_weights<P>(x, c, sn, s);
+      for (int n = 0; n < P + 2; ++n) G[q][n] += modes_.gain[k] * s[n];
+    }
+  }
+  for (int q = 1; q <= kProbes; ++q) {
+    const double theta = static_cast<double>(q) / kProbes, t = theta * r.h;
+    for (int i = 0; i <= P; ++i) {
+      double z = 0.0, v = V_[0][i] * G[q][0], pw = 1.0;
+      for (int n = 0; n <= P; ++n) {
+        z += V_[n][i] * pw * G[q][n + 1];
+        if (n > 0) v += n * V_[n][i] * pw * G[q][n];
+        pw *= theta;
+      }
+      r.probe_z[q][i] = -t * t * z;
+      r.probe_rate[q][i] = -t * v;
+    }
+  }
+}
+
+// The free motion (F = 0 over the step) of alpha and the modes at the probes, into free_z_,
+// free_rate_: each mode's phase turned by omega h/Q per probe.
+template <class System, int P>
+void PlateExponentialStepper<System, P>::free_motion(const Rung& r) {
+  std::array<double, kProbes + 1> w{}, wr{};
+  const std::size_t N = modes_.omega.size();
+  double mag = 0.0;
+  for (std::size_t k = 0; k < N; ++k) {
+    mag += std::abs(x0_[2 + 2 * k]);
+    double re = x0_[2 + 2 * k], im = -x0_[3 + 2 * k] * modes_.inv_omega[k];  // u - i u'/omega
+    const double cq = r.cos_q[k], sq = r.sin_q[k], om = modes_.omega[k];
+    for (int q = 1; q <= kProbes; ++q) {
+      const double re2 = re * cq - im * sq;
+      im = re * sq + im * cq;
+      re = re2;
+      w[q] += re;
+      wr[q] -= om * im;
+    }
+  }
+  z_magnitude_ = mag + std::abs(x0_[0]) + std::abs(x0_[1]) * r.h;
+  for (int q = 1; q <= kProbes; ++q) {
+    const double t = r.h * q / kProbes;
+    free_z_[q] = x0_[0] + x0_[1] * t - w[q];
+    free_rate_[q] = x0_[1] - wr[q];
+  }
+}
+
+// Newton's method on F_j - f(z_j - C F_j) = 0, j = 1 .. P (header); false when it does not
+// converge (the step is then rejected).
+template <class System, int P>
+bool PlateExponentialStepper<System, P>::solve_collocation(const System& sys, const Rung& r) {
+  const double C = modes_.compliance;
+  Row F = F_;
+  for (int j = 1; j <= P; ++j) F[j] = F_[0];
+  for (int it = 0; it < kNewtonIterations; ++it) {
+    std::array<std::array<double, P + 1>, P> J{};  // J | -G, rows j = 1 .. P
+    double scale = 0.0;
+    std::array<double, P> noise{};  // F's rounding floor: f' times z's rounding, through 1 + f' C
+    for (int j = 1; j <= P; ++j) {
+      const auto& a = r.probe_z[kProbesPerNode * j];
+      double z = free_z_[kProbesPerNode * j] - C * F[j];
+      for (int i = 0; i <= P; ++i) z += a[i] * F[i];
+      const double f = sys.law_force(z), df = sys.law_stiffness(z);
+      if (!std::isfinite(f) || !std::isfinite(df)) return false;
+      for (int l = 1; l <= P; ++l) J[j - 1][l - 1] = (l == j ? 1.0 + df * C : 0.0) - df * a[l];
+      J[j - 1][P] = f - F[j];
+      scale = std::max({scale, std::abs(F[j]), std::abs(f)});
+      noise[j - 1] = 64.0 * kEps * std::abs(df) * z_magnitude_ / (1.0 + std::abs(df) * C);
+    }
+    for (int c = 0; c < P; ++c) {  // Gaussian elimination, partial pivoting
+      int piv = c;
+      for (int rr = c + 1; rr < P; ++rr)
+        if (std::abs(J[rr][c]) > std::abs(J[piv][c])) piv = rr;
+      std::swap(J[c], J[piv]);
+      if (J[c][c] == 0.0) return false;
+      for (int rr = c + 1; rr < P; ++rr) {
+        const double m = J[rr][c] / J[c][c];
+        for (int cc = c; cc <= P; ++cc) J[rr][cc] -= m * J[c][cc];
+      }
+    }
+    bool converged = true;
+    for (int c = P - 1; c >= 0; --c) {
+      double v = J[c][P];
+      for (int cc = c + 1; cc < P; ++cc) v -= J[c][cc] * J[cc][P];
+      J[c][P] = v / J[c][c];
+      F[c + 1] += J[c][P];
+      if (!std::isfinite(F[c + 1])) return false;
+      converged = converged && std::abs(J[c][P]) <= 1e-14 * scale + noise[c];
+    }
+    if (converged) {
+      F_ = F;
+      noise_ = *std::max_element(noise.begin(), noise.end());
+      return true;
+    }
+  }
+  return false;
+}
+
+// max over alpha, alpha', w, w' at the end of |full - embedded|/(atol + rtol max(|old|, |new|)).
+template <class System, int P>
+double PlateExponentialStepper<System, P>::error_norm(const Rung& r) const {
+  Row d{};  // F minus the degree-(P-1) interpolant of nodes 0 .. P-1: nonzero at node P only
+  double ext = 0.0;
+  for (int i = 0; i < P; ++i) {
+    double l = 1.0;
+    for (int m = 0; m < P; ++m)
+      if (m != i) l *= static_cast<double>(P - m) / (i - m);
+    ext += l * F_[i];
+  }
+  // less its rounding floor: the P-th difference of F grows the nodes' noise by 2^P
+  const double dP = F_[P] - ext;
+  d[P] = std::copysign(std::max(0.0, std::abs(dP) - std::ldexp(noise_ + kEps * std::abs(F_[P]), P)),
+                       dP);
+  auto dot = [&](const Row& row) {
+    double s = 0.0;
+    for (int i = 0; i <= P; ++i) s += row[i] * d[i];
+    return s;
+  };
+  auto dot_f = [&](const Row& row) {
+    double s = 0.0;
+    for (int i = 0; i <= P; ++i) s += row[i] * F_[i];
+    return s;
+  };
+  double w0 = 0.0, wr0 = 0.0;
+  for (std::size_t i = 2; i + 1 < x0_.size(); i += 2) w0 += x0_[i], wr0 += x0_[i + 1];
+  // w = alpha - z_kin: the free part from the probes' free motion, then the forced part
+  const double w1 = x0_[0] + x0_[1] * r.h - free_z_[kProbes] + dot_f(r.w_end);
+  const double wr1 = x0_[1] - free_rate_[kProbes] + dot_f(r.w_rate_end);
+  const double a1 = x0_[0] + x0_[1] * r.h + dot_f(r.alpha_end);
+  const double v1 = x0_[1] + dot_f(r.alpha_rate_end);
+  const std::array<double, 4> est{dot(r.alpha_end), dot(r.alpha_rate_end), dot(r.w_end),
+                                  dot(r.w_rate_end)};
+  const std::array<double, 4> old{x0_[0], x0_[1], w0, wr0}, now{a1, v1, w1, wr1};
+  double err = 0.0;
+  for (int c = 0; c < 4; ++c)
+    err = std::max(
+        err, std::abs(est[c]) / (atol_ + rtol_ * std::max(std::abs(old[c]), std::abs(now[c]))));
+  return err;
+}
+
+// The accepted step: every mode's end state, the probes' values, the monomial coefficients.
+template <class System, int P>
+void PlateExponentialStepper<System, P>::advance(const Rung& r) {
+  const std::size_t N = modes_.omega.size();
+  for (int n = 0; n <= P; ++n) {
+    double c = 0.0;
+    for (int i = 0; i <= P; ++i) c += V_[n][i] * F_[i];
+    coeff_[n] = c;
+  }
+  std::array<double, P + 2> cu{}, cv{};  // the forced end state = h^2 sum cu w, h sum cv w
+  cv[0] = coeff_[0];
+  for (int n = 0; n <= P; ++n) cu[n + 1] = r.h * r.h * coeff_[n];
+  for (int n = 1; n <= P; ++n) cv[n] = n * coeff_[n];
+  for (int n = 0; n <= P; ++n) cv[n] *= r.h;
+  trial_.resize(x0_.size());
+  for (std::size_t k = 0; k < N; ++k) {
+    const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k], om = modes_.omega[k];
+    const auto& w = r.end_w[k];
+    double fu = 0.0, fv = 0.0;
+    for (int n = 0; n < P + 2; ++n) fu += cu[n] * w[n], fv += cv[n] * w[n];
+    trial_[2 + 2 * k] = u * r.cos_h[k] + v * modes_.inv_omega[k] * r.sin_h[k] + fu;
+    trial_[3 + 2 * k] = -u * om * r.sin_h[k] + v * r.cos_h[k] + fv;
+  }
+  double fa = 0.0, fva = 0.0;
+  for (int i = 0; i <= P; ++i) fa += r.alpha_end[i] * F_[i], fva += r.alpha_rate_end[i] * F_[i];
+  trial_[0] = x0_[0] + x0_[1] * r.h + fa;
+  trial_[1] = x0_[1] + fva;
+  for (int q = 1; q <= kProbes; ++q) {
+    double z = free_z_[q], v = free_rate_[q];
+    for (int i = 0; i <= P; ++i) z += r.probe_z[q][i] * F_[i], v += r.probe_rate[q][i] * F_[i];
+    probe_z_[q] = z, probe_rate_[q] = v;
+  }
+  h_ = r.h;
+  t1_ = t0_ + r.h;
+  std::swap(x1_, trial_);
+}
+
+template <class System, int P>
+StepResult PlateExponentialStepper<System, P>::step(const System& sys) {
+  t0_ = t1_;
+  x0_ = x1_;
+  const double F_start = F_start_;
+  for (int rejections = 0;; ++rejections) {
+    if (rejections >= kMaxRejections)
+      return StepResult::failure(StepFailure::attempts_exhausted,
+                                 "exponential: " + std::to_string(kMaxRejections) +
+                                     " rejected attempts at t = " + std::to_string(t0_));
+    if (fixed_rung_ >= 0) rung_ = fixed_rung_;
+    const Rung& r = rung(rung_);
+    if (r.h < 1e-14 * (1.0 + std::abs(t0_)))
+      return StepResult::failure(StepFailure::step_underflow,
+                                 "exponential: step " + std::to_string(r.h) +
+                                     " below 1e-14 (1 + |t|) at t = " + std::to_string(t0_) +
+                                     (sys.failure().empty() ? "" : " (" + sys.failure() + ")"));
+    F_.fill(0.0);
+    F_[0] = F_start;
+    free_motion(r);
+    if (fixed_rung_ >= 0 && !solve_collocation(sys, r))
+      return StepResult::failure(StepFailure::attempts_exhausted,
+                                 "exponential: the collocation equations did not converge at the "
+                                 "fixed step " +
+                                     std::to_string(r.h) + " at t = " + std::to_string(t0_));
+    if (fixed_rung_ < 0 && !solve_collocation(sys, r)) {
+      ++rejected_, rung_ += 2, grow_ok_ = false;
+      continue;
+    }
+    const double err = fixed_rung_ >= 0 ? 0.0 : error_norm(r);
+    if (!(err <= 1.0)) {
+      ++rejected_, grow_ok_ = false;
+      const double fac = std::isfinite(err)
+                             ? std::clamp(0.9 * std::pow(err, -1.0 / kEstimateOrder), 0.25, 0.5)
+                             : 0.25;
+      rung_ += static_cast<int>(std::ceil(-std::log2(fac)));
+      continue;
+    }
+    advance(r);
+    F_start_ = F_[P];
+    ++steps_;
+    const double fac =
+        std::clamp(0.9 * std::pow(std::max(err, 1e-300), -1.0 / kEstimateOrder), 1.0, 4.0);
+    if (grow_ok_) rung_ -= static_cast<int>(std::floor(std::log2(fac)));
+    grow_ok_ = true;
+    return StepResult::success();
+  }
+}
+
+// {z_kin, rate} at theta of the current step: alpha and every mode by the Duhamel formula.
+template <class System, int P>
+std::array<double, 2> PlateExponentialStepper<System, P>::gap_at(double theta) const {
+  const double t = theta * h_;
+  std::array<double, P + 2> s{};
+  auto forced = [&](const std::array<double, P + 2>& w) {  // sum_n c_n theta^n s_n, and rate's
+    double u = 0.0, v = coeff_[0] * w[0], pw = 1.0;
+    for (int n = 0; n <= P; ++n) {
+      u += coeff_[n] * pw * w[n + 1];
+      if (n > 0) v += n * coeff_[n] * pw * w[n];
+      pw *= theta;
+    }
+    return std::array<double, 2>{t * t * u, t * v};
+  };
+  duhamel_weights<P>(0.0, 1.0, 0.0, s);
+  const auto fa = forced(s);
+  double w = 0.0, wr = 0.0;
+  for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
+    const double om = modes_.omega[k], x = om * t, c = std::cos(x), sn = std::sin(x);
+    const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
+    duhamel_weights<P>(x, c, sn, s);
+    const auto f = forced(s);
+    w += u * c + v * modes_.inv_omega[k] * sn + modes_.gain[k] * f[0];
+    wr += -u * om * sn + v * c + modes_.gain[k] * f[1];
+  }
+  return {x0_[0] + x0_[1] * t - fa[0] - w, x0_[1] - fa[1] - wr};
+}
+
+template <class System, int P>
+std::array<double, 2> PlateExponentialStepper<System, P>::event_gap(double t) const {
+  if (t == t1_) return {probe_z_[kProbes], probe_rate_[kProbes]};
+  const double theta = (t - t0_) / h_;
+  const long q = std::lround(theta * kProbes);
+  if (q >= 1 && q < kProbes && t == t0_ + (t1_ - t0_) * static_cast<double>(q) / kProbes)
+    return {probe_z_[q], probe_rate_[q]};
+  return gap_at(theta);
+}
+
+template <class System, int P>
+void PlateExponentialStepper<System, P>::interpolate(const System&, double t,
+                                                     state_type& out) const {
+  out.resize(x0_.size());
+  if (t == t1_) {
+    out = x1_;
+    return;
+  }
+  if (t == t0_) {
+    out = x0_;
+    return;
+  }
+  const double theta = (t - t0_) / h_, tt = theta * h_;
+  std::array<double, P + 2> s{};
+  auto forced = [&](const std::array<double, P + 2>& w) {
+    double u = 0.0, v = coeff_[0] * w[0], pw = 1.0;
+    for (int n = 0; n <= P; ++n) {
+      u += coeff_[n] * pw * w[n + 1];
+      if (n > 0) v += n * coeff_[n] * pw * w[n];
+      pw *= theta;
+    }
+    return std::array<double, 2>{tt * tt * u, tt * v};
+  };
+  duhamel_weights<P>(0.0, 1.0, 0.0, s);
+  const auto fa = forced(s);
+  out[0] = x0_[0] + x0_[1] * tt - fa[0];
+  out[1] = x0_[1] - fa[1];
+  for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
+    const double om = modes_.omega[k], x = om * tt, c = std::cos(x), sn = std::sin(x);
+    const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
+    duhamel_weights<P>(x, c, sn, s);
+    const auto f = forced(s);
+    out[2 + 2 * k] = u * c + v * modes_.inv_omega[k] * sn + modes_.gain[k] * f[0];
+    out[3 + 2 * k] = -u * om * sn + v * c + modes_.gain[k] * f[1];
+  }
+}
+
+}  // namespace ivv
