@@ -132,6 +132,27 @@ TEST(PlateImpact, TwoSteppersAgree) {
   EXPECT_LT(a.steps, b.steps);  // the eighth-order pair takes fewer steps
 }
 
+// A reload located where z already falls (a graze of z_m) must switch back to unloading at
+// once: the 5 mm ball on the 200 mm plate at cut-off 80 (1739 modes), rtol 1e-12, grazed z_m
+// after its maximum, stayed on the loading branch with no separation root, went on in tension
+// and ended with two contacts and e = 0.032. The exponential stepper (a different method,
+// which never grazed there) and dop853 itself at rtol 1e-10 give one contact and e = 0.19234;
+// 1e-8 is a hundred times the two runs' stated rtol on e ~ 0.2.
+TEST(PlateImpact, AReloadAtAGrazeOfZmaxStillFindsTheSeparation) {
+  const Scene s = ball_on_plate(0.2, 0.2, 0.002);
+  PlateImpactOptions opt;
+  opt.cutoff = 80.0;
+  opt.rtol = 1e-12;
+  opt.atol = 1e-14;
+  const PlateImpactResult a = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  opt.stepper = PlateImpactOptions::Stepper::exponential;
+  const PlateImpactResult b = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  ASSERT_TRUE(a.ok && b.ok) << a.reason << b.reason;
+  EXPECT_EQ(a.contacts.size(), 1u);
+  EXPECT_EQ(b.contacts.size(), 1u);
+  EXPECT_NEAR(a.e, b.e, 1e-8);
+}
+
 // The cut-off chosen for a truncation tolerance: the answer is the run at the chosen cut-off
 // (the same e as a fixed run there, to rounding: the same computation), its estimate within the
 // tolerance, from a coarser run whose e it names.
