@@ -153,6 +153,26 @@ TEST(PlateImpact, AReloadAtAGrazeOfZmaxStillFindsTheSeparation) {
   EXPECT_NEAR(a.e, b.e, 1e-8);
 }
 
+// A reload right after a maximum, from a restart at z_m where z still rose by the locator's
+// tolerance, has no bracket on its step and was missed: the drop-weight coupon at cut-off 60,
+// rtol 1e-6, stayed on the stiffer unloading curve above z_m and ended with e = 0.9402, F_max
+// 6566 N. Now within 1e-6 of the same plate at rtol 1e-8 (measured 7e-9; 1e-6 is the truncation
+// tolerance the plate's runs state, and a missed reload costs 3e-2).
+TEST(PlateImpact, AReloadRightAfterAMaximumIsNotMissed) {
+  const Scene s = load_scene("drop-weight-coupon");
+  PlateImpactOptions opt;
+  opt.cutoff = 60.0;
+  opt.rtol = 1e-6;
+  opt.atol = 1e-8;
+  const PlateImpactResult loose = simulate_plate_impact(s, LawKind::elastoplastic, {}, opt);
+  opt.rtol = 1e-8;
+  opt.atol = 1e-10;
+  const PlateImpactResult tight = simulate_plate_impact(s, LawKind::elastoplastic, {}, opt);
+  ASSERT_TRUE(loose.ok && tight.ok) << loose.reason << tight.reason;
+  EXPECT_NEAR(loose.e, tight.e, 1e-6);
+  EXPECT_NEAR(loose.F_max / tight.F_max, 1.0, 1e-6);
+}
+
 // The cut-off chosen for a truncation tolerance: the answer is the run at the chosen cut-off
 // (the same e as a fixed run there, to rounding: the same computation), its estimate within the
 // tolerance, from a coarser run whose e it names.
