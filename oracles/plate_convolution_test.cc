@@ -7,28 +7,10 @@
 
 #include "scene/scene.h"
 #include "solver/plate/plate_modes.h"
+#include "solver/plate/steel_ball_on_plate.h"
 
 namespace ivv {
 namespace {
-
-Scene ball_on_small_plate() {
-  Scene s;
-  s.mass = 0.004168;
-  s.radius = 0.005;
-  s.impactor_youngs_modulus = 207e9;
-  s.impactor_poisson_ratio = 0.3;
-  s.target_youngs_modulus = 207e9;
-  s.target_poisson_ratio = 0.3;
-  s.velocity = 1.0;
-  Structure st;
-  st.thickness = 0.001;
-  st.density = 7960.0;
-  st.length_x = 0.05;
-  st.length_y = 0.04;
-  st.edges = PlateEdges::simply_supported;
-  s.damping = Damping::from_structure(st);
-  return s;
-}
 
 // No kept modes: the Hertz spring in series with the plate's static compliance C, elastic, so
 // e = 1 and (1/2) m v0^2 = (2/5) K z_m^{5/2} + (1/2) C (K z_m^{3/2})^2 (z_m by bisection here).
@@ -36,7 +18,7 @@ Scene ball_on_small_plate() {
 // the kinks at onset and separation fall between grid points), and at 400 steps per contact
 // the error is below 1e-4.
 TEST(PlateConvolution, WithoutModesIsTheTwoSpringModelToSecondOrder) {
-  const Scene s = ball_on_small_plate();
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   const FinitePlate plate = finite_plate(s.damping.structure, 207e9, 0.3);
   const PlateModes none = plate_modes(plate, {1.0});  // below the first mode
   ASSERT_EQ(none.modes.size(), 0u);
@@ -62,7 +44,7 @@ TEST(PlateConvolution, WithoutModesIsTheTwoSpringModelToSecondOrder) {
 }
 
 TEST(PlateConvolution, RefusesANonPositiveStep) {
-  const Scene s = ball_on_small_plate();
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   const PlateModes none = plate_modes(finite_plate(s.damping.structure, 207e9, 0.3), {1.0});
   EXPECT_THROW(plate_impact_by_convolution(s, LawKind::hertz, {}, none, {0.0, 1.0, true}),
                std::invalid_argument);

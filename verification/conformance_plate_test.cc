@@ -7,6 +7,7 @@
 
 #include "scene/input_error.h"
 #include "solver/laws/hertz.h"
+#include "solver/plate/steel_ball_on_plate.h"
 #include "verification/conformance.h"
 #include "verification/conformance_gtest.h"
 #include "verification/conformance_plate_law.h"
@@ -17,23 +18,8 @@ namespace {
 // The 5 mm steel ball (4.168 g) on the 200 x 200 x 2 mm simply supported steel plate
 // (reference_data/scenes/steel-ball-on-finite-steel-plate.toml).
 Scene ball_on_finite_plate() {
-  Scene s;
+  Scene s = steel_ball_on_plate(0.2, 0.2, 0.002);
   s.name = "steel-ball-on-finite-steel-plate";
-  s.mass = 0.004168;
-  s.radius = 0.005;
-  s.impactor_youngs_modulus = 207e9;
-  s.impactor_poisson_ratio = 0.3;
-  s.target_youngs_modulus = 207e9;
-  s.target_poisson_ratio = 0.3;
-  s.velocity = 1.0;
-  Structure st;
-  st.kind = Structure::Kind::plate;
-  st.thickness = 0.002;
-  st.density = 7960.0;
-  st.length_x = 0.2;
-  st.length_y = 0.2;
-  st.edges = PlateEdges::simply_supported;
-  s.damping = Damping::from_structure(st);
   return s;
 }
 

@@ -237,6 +237,10 @@ class PlateExponentialStepper {
   void advance(const Rung& r);
   // {z_kin, rate} at theta of the current step by the Duhamel formula (O(N) trigonometry).
   std::array<double, 2> gap_at(double theta) const;
+  // The forced part of a response at theta of the step, from its Duhamel weights w = s_(-1) ..
+  // s_P (duhamel_weights) at omega t: {t^2 sum_n c_n theta^n s_n, t sum_n n c_n theta^(n-1)
+  // s_(n-1)} (displacement and rate, per unit gain; the rate's n = 0 term is c_0 s_(-1)).
+  std::array<double, 2> forced_at(double theta, const std::array<double, P + 2>& w) const;
 
   inline static const std::array<std::array<double, P + 1>, P + 1> V_ = lagrange_monomials<P>();
 
@@ -558,28 +562,32 @@ StepResult PlateExponentialStepper<System, P>::step(const System& sys) {
   }
 }
 
+template <class System, int P>
+std::array<double, 2> PlateExponentialStepper<System, P>::forced_at(
+    double theta, const std::array<double, P + 2>& w) const {
+  const double t = theta * h_;
+  double u = 0.0, v = coeff_[0] * w[0], pw = 1.0;
+  for (int n = 0; n <= P; ++n) {
+    u += coeff_[n] * pw * w[n + 1];
+    if (n > 0) v += n * coeff_[n] * pw * w[n];
+    pw *= theta;
+  }
+  return {t * t * u, t * v};
+}
+
 // {z_kin, rate} at theta of the current step: alpha and every mode by the Duhamel formula.
 template <class System, int P>
 std::array<double, 2> PlateExponentialStepper<System, P>::gap_at(double theta) const {
   const double t = theta * h_;
   std::array<double, P + 2> s{};
-  auto forced = [&](const std::array<double, P + 2>& w) {  // sum_n c_n theta^n s_n, and rate's
-    double u = 0.0, v = coeff_[0] * w[0], pw = 1.0;
-    for (int n = 0; n <= P; ++n) {
-      u += coeff_[n] * pw * w[n + 1];
-      if (n > 0) v += n * coeff_[n] * pw * w[n];
-      pw *= theta;
-    }
-    return std::array<double, 2>{t * t * u, t * v};
-  };
   duhamel_weights<P>(0.0, 1.0, 0.0, s);
-  const auto fa = forced(s);
+  const auto fa = forced_at(theta, s);
   double w = 0.0, wr = 0.0;
   for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
     const double om = modes_.omega[k], x = om * t, c = std::cos(x), sn = std::sin(x);
     const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
     duhamel_weights<P>(x, c, sn, s);
-    const auto f = forced(s);
+    const auto f = forced_at(theta, s);
     w += u * c + v * modes_.inv_omega[k] * sn + modes_.gain[k] * f[0];
     wr += -u * om * sn + v * c + modes_.gain[k] * f[1];
   }
@@ -610,24 +618,15 @@ void PlateExponentialStepper<System, P>::interpolate(const System&, double t,
   }
   const double theta = (t - t0_) / h_, tt = theta * h_;
   std::array<double, P + 2> s{};
-  auto forced = [&](const std::array<double, P + 2>& w) {
-    double u = 0.0, v = coeff_[0] * w[0], pw = 1.0;
-    for (int n = 0; n <= P; ++n) {
-      u += coeff_[n] * pw * w[n + 1];
-      if (n > 0) v += n * coeff_[n] * pw * w[n];
-      pw *= theta;
-    }
-    return std::array<double, 2>{tt * tt * u, tt * v};
-  };
   duhamel_weights<P>(0.0, 1.0, 0.0, s);
-  const auto fa = forced(s);
+  const auto fa = forced_at(theta, s);
   out[0] = x0_[0] + x0_[1] * tt - fa[0];
   out[1] = x0_[1] - fa[1];
   for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
     const double om = modes_.omega[k], x = om * tt, c = std::cos(x), sn = std::sin(x);
     const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
     duhamel_weights<P>(x, c, sn, s);
-    const auto f = forced(s);
+    const auto f = forced_at(theta, s);
     out[2 + 2 * k] = u * c + v * modes_.inv_omega[k] * sn + modes_.gain[k] * f[0];
     out[3 + 2 * k] = -u * om * sn + v * c + modes_.gain[k] * f[1];
   }

@@ -13,30 +13,10 @@
 
 #include "scene/input_error.h"
 #include "scene/scene.h"
+#include "solver/plate/steel_ball_on_plate.h"
 
 namespace ivv {
 namespace {
-
-// The 5 mm steel ball (4.168 g, R = 5 mm) at 1 m/s on an a x b x h simply supported steel plate.
-Scene ball_on_plate(double a, double b, double h) {
-  Scene s;
-  s.mass = 0.004168;
-  s.radius = 0.005;
-  s.impactor_youngs_modulus = 207e9;
-  s.impactor_poisson_ratio = 0.3;
-  s.target_youngs_modulus = 207e9;
-  s.target_poisson_ratio = 0.3;
-  s.velocity = 1.0;
-  Structure st;
-  st.kind = Structure::Kind::plate;
-  st.thickness = h;
-  st.density = 7960.0;
-  st.length_x = a;
-  st.length_y = b;
-  st.edges = PlateEdges::simply_supported;
-  s.damping = Damping::from_structure(st);
-  return s;
-}
 
 // The ledger is checked at every maximum of compression and separation; each is a sum of a few
 // terms integrated to rtol 1e-10, atol 1e-12 per step over a few thousand steps: their local
@@ -48,7 +28,7 @@ constexpr double kLedger = 1e-8;
 // (1/2) m v0^2 = (2/5) K z_m^{5/2} + (1/2) C F_m^2 with F_m = K z_m^{3/2}. The run must meet this
 // to its integration tolerance (1e-10 per step over ~100 steps: 1e-8 with room).
 TEST(PlateImpact, WithoutModesIsTheTwoSpringModel) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   PlateImpactOptions opt;
   opt.cutoff = 1e-3;
   const PlateImpactResult r = simulate_plate_impact(s, LawKind::hertz, {}, opt);
@@ -67,7 +47,7 @@ TEST(PlateImpact, WithoutModesIsTheTwoSpringModel) {
 // the plate (e_first < 0), contacts follow, and the run ends once the bound says no further
 // contact is possible. Energy and momentum hold over the whole story.
 TEST(PlateImpact, RepeatedContactsKeepTheLedgerAndTheImpulse) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   PlateImpactOptions opt;
   opt.cutoff = 20.0;
   const PlateImpactResult r = simulate_plate_impact(s, LawKind::hertz, {}, opt);
@@ -93,7 +73,7 @@ TEST(PlateImpact, RepeatedContactsKeepTheLedgerAndTheImpulse) {
 // vibration reloads the spring), the ledger holds with the plastic work, and W_p is the loop
 // area of the largest z_m (reloading below z_m retraces the unloading curve).
 TEST(PlateImpact, ElastoplasticReloadingKeepsTheLedger) {
-  Scene s = ball_on_plate(0.125, 0.075, 0.004);
+  Scene s = steel_ball_on_plate(0.125, 0.075, 0.004);
   s.mass = 5.5;
   s.radius = 0.008;
   s.velocity = 2.0;
@@ -118,7 +98,7 @@ TEST(PlateImpact, ElastoplasticReloadingKeepsTheLedger) {
 // 1e-10 per step over a few thousand steps, so their e, e_first and F_max agree to ~1e-8 (1e-7
 // with room), and they see the same contacts.
 TEST(PlateImpact, TwoSteppersAgree) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   PlateImpactOptions opt;
   opt.cutoff = 10.0;
   const PlateImpactResult a = simulate_plate_impact(s, LawKind::hertz, {}, opt);
@@ -139,7 +119,7 @@ TEST(PlateImpact, TwoSteppersAgree) {
 // which never grazed there) and dop853 itself at rtol 1e-10 give one contact and e = 0.19234;
 // 1e-8 is a hundred times the two runs' stated rtol on e ~ 0.2.
 TEST(PlateImpact, AReloadAtAGrazeOfZmaxStillFindsTheSeparation) {
-  const Scene s = ball_on_plate(0.2, 0.2, 0.002);
+  const Scene s = steel_ball_on_plate(0.2, 0.2, 0.002);
   PlateImpactOptions opt;
   opt.cutoff = 80.0;
   opt.rtol = 1e-12;
@@ -177,7 +157,7 @@ TEST(PlateImpact, AReloadRightAfterAMaximumIsNotMissed) {
 // (the same e as a fixed run there, to rounding: the same computation), its estimate within the
 // tolerance, from a coarser run whose e it names.
 TEST(PlateImpact, CutoffChosenForTheTruncationTolerance) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   PlateImpactOptions opt;
   opt.cutoff = 10.0;
   opt.truncation_tol = 1e-5;
@@ -201,7 +181,7 @@ TEST(PlateImpact, CutoffChosenForTheTruncationTolerance) {
 // A tolerance that needs more modes than the limit is refused by name: how many, and that the
 // infinite plate may be the model wanted.
 TEST(PlateImpact, RefusesATruncationNeedingTooManyModes) {
-  const Scene s = ball_on_plate(0.2, 0.2, 0.002);
+  const Scene s = steel_ball_on_plate(0.2, 0.2, 0.002);
   PlateImpactOptions opt;
   opt.truncation_tol = 1e-6;
   opt.max_modes = 100;
@@ -218,7 +198,7 @@ TEST(PlateImpact, RefusesATruncationNeedingTooManyModes) {
 }
 
 TEST(PlateImpact, RefusesWhatItDoesNotModel) {
-  Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   try {
     simulate_plate_impact(s, LawKind::hunt_crossley, {}, {});
     FAIL() << "accepted";

@@ -11,31 +11,10 @@
 #include "scene/input_error.h"
 #include "scene/scene.h"
 #include "solver/plate/plate_law_impact.h"
+#include "solver/plate/steel_ball_on_plate.h"
 
 namespace ivv {
 namespace {
-
-// The 5 mm steel ball (4.168 g) at 1 m/s on an a x b x h simply supported steel plate.
-Scene ball_on_plate(double a, double b, double h, std::optional<double> yield = std::nullopt) {
-  Scene s;
-  s.mass = 0.004168;
-  s.radius = 0.005;
-  s.impactor_youngs_modulus = 207e9;
-  s.impactor_poisson_ratio = 0.3;
-  s.target_youngs_modulus = 207e9;
-  s.target_poisson_ratio = 0.3;
-  s.yield_strength = yield;
-  s.velocity = 1.0;
-  Structure st;
-  st.kind = Structure::Kind::plate;
-  st.thickness = h;
-  st.density = 7960.0;
-  st.length_x = a;
-  st.length_y = b;
-  st.edges = PlateEdges::simply_supported;
-  s.damping = Damping::from_structure(st);
-  return s;
-}
 
 SimulationRequest expression(const Scene& s, std::string force, std::string unload = "") {
   SimulationRequest r;
@@ -53,7 +32,7 @@ constexpr double kSameModel = 1e-7;
 
 // The 50 x 40 x 1 mm plate outruns the ball: repeated contacts, e_first < 0.
 TEST(PlateLaw, AnExpressionLawRunsTheModelOfTheBuiltInLawItRestates) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   const PlateImpactResult hertz = simulate_plate_impact(s, LawKind::hertz, {});
   const PlateImpactResult typed = simulate_plate_law(expression(s, "K_h*z^1.5"));
   ASSERT_TRUE(hertz.ok && typed.ok) << hertz.reason << typed.reason;
@@ -76,7 +55,7 @@ TEST(PlateLaw, AnExpressionLawRunsTheModelOfTheBuiltInLawItRestates) {
 // its stepper crosses it inside a step: the error there is the step's local error at a kink in the
 // second derivative (~1e-8 at rtol 1e-10), hence 1e-6.
 TEST(PlateLaw, AnExpressionLawReloadsOnItsUnloadingCurveLikeTheBuiltInLaw) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001, 400e6);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001, 400e6);
   PlateImpactOptions opt;
   opt.cutoff = 20.0;
   const PlateImpactResult builtin = simulate_plate_impact(s, LawKind::elastoplastic, {}, opt);
@@ -106,7 +85,7 @@ void expect_refused(const SimulationRequest& r, const std::string& field) {
 }
 
 TEST(PlateLaw, WhatThePlateDoesNotModelIsRefusedByName) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   expect_refused(expression(s, "K_h*z^1.5 + 10*zdot"), "--force");  // rate-dependent
   SimulationRequest tension = expression(s, "K_h*z^1.5");
   tension.expression.allow_tension = true;
@@ -123,7 +102,7 @@ TEST(PlateLaw, WhatThePlateDoesNotModelIsRefusedByName) {
 
 // A NaN inside the contact fails the run with the expression named, never a number.
 TEST(PlateLaw, ANonFiniteForceFailsTheRunWithItsReason) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   const PlateImpactResult r = simulate_plate_law(expression(s, "z < 1e-6 ? K_h*z^1.5 : sqrt(-z)"));
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.reason.find("--force"), std::string::npos) << r.reason;
@@ -146,7 +125,7 @@ struct UserHertz {
 };
 
 TEST(PlateLaw, ACxxLawOfAUserRunsOnThePlate) {
-  const Scene s = ball_on_plate(0.05, 0.04, 0.001);
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
   const PlateImpactResult hertz = simulate_plate_impact(s, LawKind::hertz, {});
   const PlateImpactResult user = simulate_plate_impact_of(UserHertz{derive(s).K_h}, s);
   ASSERT_TRUE(user.ok) << user.reason;
