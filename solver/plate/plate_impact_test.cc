@@ -116,8 +116,10 @@ TEST(PlateImpact, TwoSteppersAgree) {
 // once: the 5 mm ball on the 200 mm plate at cut-off 80 (1739 modes), rtol 1e-12, grazed z_m
 // after its maximum, stayed on the loading branch with no separation root, went on in tension
 // and ended with two contacts and e = 0.032. The exponential stepper (a different method,
-// which never grazed there) and dop853 itself at rtol 1e-10 give one contact and e = 0.19234;
-// 1e-8 is a hundred times the two runs' stated rtol on e ~ 0.2.
+// which never grazed there) and dop853 itself at rtol 1e-10 give one contact and e = 0.19234.
+// Both runs keep the same modes, so only their integration errors differ: rtol 1e-12 per step
+// over ~430 steps, ~1e-10 in e (measured: equal to 10 digits); 1e-8 leaves a factor 100, and a
+// missed separation costs 0.16.
 TEST(PlateImpact, AReloadAtAGrazeOfZmaxStillFindsTheSeparation) {
   const Scene s = steel_ball_on_plate(0.2, 0.2, 0.002);
   PlateImpactOptions opt;
@@ -136,8 +138,8 @@ TEST(PlateImpact, AReloadAtAGrazeOfZmaxStillFindsTheSeparation) {
 // A reload right after a maximum, from a restart at z_m where z still rose by the locator's
 // tolerance, has no bracket on its step and was missed: the drop-weight coupon at cut-off 60,
 // rtol 1e-6, stayed on the stiffer unloading curve above z_m and ended with e = 0.9402, F_max
-// 6566 N. Now within 1e-6 of the same plate at rtol 1e-8 (measured 7e-9; 1e-6 is the truncation
-// tolerance the plate's runs state, and a missed reload costs 3e-2).
+// 6566 N. Now within 1e-6 of the same plate (same modes) at rtol 1e-8: what the loose run's
+// rtol 1e-6 promises for e ~ 0.9 (measured 7e-9); a missed reload costs 3e-2.
 TEST(PlateImpact, AReloadRightAfterAMaximumIsNotMissed) {
   const Scene s = load_scene("drop-weight-coupon");
   PlateImpactOptions opt;
