@@ -11,18 +11,15 @@
 #include "oracles/expression_functions.h"
 #include "reports/law_report.h"
 #include "scene/input_error.h"
+#include "verification/check_law_request.h"
 #include "verification/conformance.h"
 
 namespace ivv::app {
 namespace {
 
 struct CheckLawFlags {
-  std::string expect_cor;
-  std::optional<double> cor_tolerance;
-  bool elastic_at_low_speed = false;
+  conformance::CheckLawAsk ask;  // the claims (the grid's axes are parsed from the strings below)
   bool no_monotone = false;
-  bool increasing_in_v0 = false;
-  std::optional<double> captured_below;
   std::optional<std::string> onset_force;  // --onset-force EXPR (expression laws)
   std::string v0_grid, zeta_grid, c_grid;
   bool json = false;
@@ -44,51 +41,16 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
   RequestOptions options = to_options(f);
-  if (c.onset_force) {
-    if (!f.force)
-      throw InputError("--onset-force",
-                       "declares the onset force of an expression law (--force); a C++ law "
-                       "declares its own (the member onset_force())");
-    options.expression.onset_force = *c.onset_force;
-    if (c.onset_force->find_first_not_of(" \t") == std::string::npos)
-      throw InputError("--onset-force", "is empty; give the force [N] at z = 0, e.g. '-Fad'");
-  }
+  conformance::declare_onset_force(options, c.onset_force);
   const SimulationRequest req = to_check_law_request(load_scene(options.scene), options);
-  conformance::Grid grid = conformance::default_grid(req.scene);
-  grid.options = req.options;
-  if (!c.v0_grid.empty()) grid.velocities = parse_grid(c.v0_grid, "--v0");
-  for (double v : grid.velocities)
-    if (!(v > 0)) throw InputError("--v0", "velocities must be > 0 m/s");
-  if (!c.zeta_grid.empty()) grid.zetas = parse_grid(c.zeta_grid, "--zeta");
-  for (double z : grid.zetas)
-    if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
-  if (!c.c_grid.empty()) grid.dashpots = parse_grid(c.c_grid, "--c");
-  for (double d : grid.dashpots)
-    if (!(d > 0 && std::isfinite(d)))
-      throw InputError("--c", "dashpot coefficients must be finite and > 0 N s/m");
-  conformance::Claims claims;
-  claims.elastic_at_low_speed = c.elastic_at_low_speed;
-  claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping = !c.no_monotone;
-  if (c.increasing_in_v0) {  // replaces the default claim that e falls with v0
-    claims.cor_nonincreasing_in_v0 = false;
-    claims.cor_nondecreasing_in_v0 = true;
-  }
-  if (c.captured_below) {
-    if (!(*c.captured_below > 0 && std::isfinite(*c.captured_below)))
-      throw InputError("--captured-below", "a speed in m/s, finite and > 0");
-    claims.captured_below = c.captured_below;
-  }
-  if (!c.expect_cor.empty()) {
-    claims.expected_cor =
-        compile_cor_claim(c.expect_cor, req.parameters, req.scene, oracles::expression_functions());
-    claims.expected_cor_text = c.expect_cor;
-  }
-  if (c.cor_tolerance) {
-    if (!(*c.cor_tolerance > 0 && *c.cor_tolerance < 1))
-      throw InputError("--cor-tolerance", "must lie in (0, 1)");
-    claims.cor_tolerance = *c.cor_tolerance;
-    claims.cor_tolerance_reason = "given on the command line (--cor-tolerance)";
-  }
+  conformance::CheckLawAsk ask = c.ask;
+  ask.monotone = !c.no_monotone;
+  if (!c.v0_grid.empty()) ask.velocities = parse_grid(c.v0_grid, "--v0");
+  if (!c.zeta_grid.empty()) ask.zetas = parse_grid(c.zeta_grid, "--zeta");
+  if (!c.c_grid.empty()) ask.dashpots = parse_grid(c.c_grid, "--c");
+  const conformance::Grid grid = conformance::check_law_grid(req, ask);
+  const conformance::Claims claims =
+      conformance::check_law_claims(req, ask, oracles::expression_functions());
   if (!c.report_dir.empty()) reports::check_report_dir(c.report_dir);
   conformance::LawUnderTest law = conformance::registry_law(req);
   if (!c.name.empty()) law.name = c.name;
@@ -98,16 +60,7 @@ int run_check_law(ModelFlags f, const CheckLawFlags& c, const std::string& comma
     std::cerr << "ivv check-law: wrote " << index.string() << "\n";
   }
   if (c.json) {
-    nlohmann::json j = conformance::to_json(report);
-    j["law"]["parameters"] = req.parameters;
-    if (req.law == LawKind::expression) {
-      j["law"]["force"] = req.expression.force;
-      j["law"]["unload"] = req.expression.unload;
-      j["law"]["allow_tension"] = req.expression.allow_tension;
-      if (c.onset_force) j["law"]["onset_force"] = *c.onset_force;
-    }
-    j["law"]["scene"] = req.scene.name;
-    if (claims.expected_cor) j["law"]["expect_cor"] = c.expect_cor;
+    const nlohmann::json j = conformance::check_law_json(report, req, claims);
     std::cout << j.dump(2) << std::endl;
   } else {
     std::cout << report.full();
@@ -139,22 +92,22 @@ class CheckLaw final : public Command {
 
 void CheckLaw::add_flags(CLI::App& cmd) {
   add_model_flags(cmd, flags_, {.scene_required = false});
-  cmd.add_option("--expect-cor", check_.expect_cor,
+  cmd.add_option("--expect-cor", check_.ask.expect_cor,
                  "the COR the law is meant to deliver: an expression in v0, the scene's "
                  "constants and --param names");
   cmd.add_option("--onset-force", check_.onset_force,
                  "expression law: the force [N] the law intends at z = 0 on first loading (an "
                  "adhesive jump-in, e.g. '-Fad'); static.onset then checks F(0) against it");
-  cmd.add_option("--cor-tolerance", check_.cor_tolerance,
+  cmd.add_option("--cor-tolerance", check_.ask.cor_tolerance,
                  "allowed |e - expected| (default 1e-9: 10x the reference's error of e)");
-  cmd.add_flag("--elastic-at-low-speed", check_.elastic_at_low_speed,
+  cmd.add_flag("--elastic-at-low-speed", check_.ask.elastic_at_low_speed,
                "claim e -> 1 as v0 -> 0 (checked)");
   cmd.add_flag("--no-monotone", check_.no_monotone,
                "do not claim that e falls with v0 and with damping");
-  cmd.add_flag("--cor-increasing-in-v0", check_.increasing_in_v0,
+  cmd.add_flag("--cor-increasing-in-v0", check_.ask.cor_increasing_in_v0,
                "claim e non-decreasing in v0 (adhesive laws: slow impacts captured), in place of "
                "the default claim that e falls with v0 (checked)");
-  cmd.add_option("--captured-below", check_.captured_below,
+  cmd.add_option("--captured-below", check_.ask.captured_below,
                  "claim: captured (e = 0) at every grid velocity below V [m/s], and without a "
                  "dashpot rebounding at every one at or above it (checked)");
   cmd.add_option("--v0", check_.v0_grid,

@@ -52,6 +52,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scene ${PROJECT_SOURCE_DIR}/closed_forms
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ivv COMPONENT ivv_development
         FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_SOURCE_DIR}/verification/conformance.h
+              ${PROJECT_SOURCE_DIR}/verification/check_law_request.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_law.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_plate_law.h
               ${PROJECT_SOURCE_DIR}/verification/conformance_gtest.h

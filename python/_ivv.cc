@@ -32,6 +32,7 @@
 #include "validation/measured_data.h"
 #include "validation/parameters.h"
 #include "validation/prediction.h"
+#include "verification/check_law_request.h"
 #include "verification/conformance.h"
 
 namespace py = pybind11;
@@ -358,48 +359,19 @@ py::dict sweep(const PyScene& s, const std::vector<double>& v0,
 
 // ---- check-law -----------------------------------------------------------------------------
 
-// The grid and the claims of `ivv check-law`, from the keywords of ivv.check_law.
-conformance::Grid check_grid(const SimulationRequest& req, const py::dict& kw) {
-  conformance::Grid grid = conformance::default_grid(req.scene);
-  grid.options = req.options;
-  if (auto v = get<std::vector<double>>(kw, "v0")) grid.velocities = *v;
-  for (double v : grid.velocities)
-    if (!(v > 0)) throw InputError("--v0", "velocities must be > 0 m/s");
-  if (auto z = get<std::vector<double>>(kw, "zeta")) grid.zetas = *z;
-  for (double z : grid.zetas)
-    if (!(z >= 0)) throw InputError("--zeta", "damping ratios must be >= 0 (0: no dashpot)");
-  if (auto c = get<std::vector<double>>(kw, "c")) grid.dashpots = *c;
-  for (double d : grid.dashpots)
-    if (!(d > 0 && std::isfinite(d)))
-      throw InputError("--c", "dashpot coefficients must be finite and > 0 N s/m");
-  return grid;
-}
-
-conformance::Claims check_claims(const SimulationRequest& req, const py::dict& kw) {
-  conformance::Claims claims;
-  claims.elastic_at_low_speed = get<bool>(kw, "elastic_at_low_speed").value_or(false);
-  claims.cor_nonincreasing_in_v0 = claims.cor_nonincreasing_in_damping =
-      get<bool>(kw, "monotone").value_or(true);
-  if (get<bool>(kw, "cor_increasing_in_v0").value_or(false)) {  // replaces e falling with v0
-    claims.cor_nonincreasing_in_v0 = false;
-    claims.cor_nondecreasing_in_v0 = true;
-  }
-  if (auto v = get<double>(kw, "captured_below")) {
-    if (!(*v > 0 && std::isfinite(*v)))
-      throw InputError("--captured-below", "a speed in m/s, finite and > 0");
-    claims.captured_below = v;
-  }
-  if (auto expect = get<std::string>(kw, "expect_cor"); expect && !expect->empty()) {
-    claims.expected_cor =
-        compile_cor_claim(*expect, req.parameters, req.scene, oracles::expression_functions());
-    claims.expected_cor_text = *expect;
-  }
-  if (auto tol = get<double>(kw, "cor_tolerance")) {
-    if (!(*tol > 0 && *tol < 1)) throw InputError("--cor-tolerance", "must lie in (0, 1)");
-    claims.cor_tolerance = *tol;
-    claims.cor_tolerance_reason = "given on the command line (--cor-tolerance)";
-  }
-  return claims;
+// The grid's axes and the claims of `ivv check-law`, from the keywords of ivv.check_law.
+conformance::CheckLawAsk check_law_ask(const py::dict& kw) {
+  conformance::CheckLawAsk ask;
+  ask.velocities = get<std::vector<double>>(kw, "v0");
+  ask.zetas = get<std::vector<double>>(kw, "zeta");
+  ask.dashpots = get<std::vector<double>>(kw, "c");
+  ask.elastic_at_low_speed = get<bool>(kw, "elastic_at_low_speed").value_or(false);
+  ask.monotone = get<bool>(kw, "monotone").value_or(true);
+  ask.cor_increasing_in_v0 = get<bool>(kw, "cor_increasing_in_v0").value_or(false);
+  ask.captured_below = get<double>(kw, "captured_below");
+  ask.expect_cor = get<std::string>(kw, "expect_cor").value_or("");
+  ask.cor_tolerance = get<double>(kw, "cor_tolerance");
+  return ask;
 }
 
 const std::vector<std::string> kCheckArgs = {"v0",
@@ -414,19 +386,6 @@ const std::vector<std::string> kCheckArgs = {"v0",
                                              "captured_below",
                                              "onset_force"};
 
-// An expression law's declared onset force (`--onset-force EXPR`), checked as the CLI checks it.
-void declare_onset_force(RequestOptions& o, const py::dict& checks) {
-  const auto onset = get<std::string>(checks, "onset_force");
-  if (!onset) return;
-  if (o.expression.force.empty())
-    throw InputError("--onset-force",
-                     "declares the onset force of an expression law (--force); a C++ law "
-                     "declares its own (the member onset_force())");
-  if (onset->find_first_not_of(" \t") == std::string::npos)
-    throw InputError("--onset-force", "is empty; give the force [N] at z = 0, e.g. '-Fad'");
-  o.expression.onset_force = *onset;
-}
-
 // The verdict with every check: the object `ivv check-law --json` prints.
 py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& checks) {
   reject_unknown(checks, kCheckArgs, "check_law()");
@@ -435,27 +394,19 @@ py::object check_law(const PyScene& s, const py::dict& kw, const py::dict& check
     throw InputError("--force",
                      "give the law to check: --force EXPR, or --law NAME (`ivv laws` lists them)");
   RequestOptions options = request_options(s, kw, "check_law()");
-  declare_onset_force(options, checks);
+  conformance::declare_onset_force(options, get<std::string>(checks, "onset_force"));
   const SimulationRequest req = to_check_law_request(s.scene, options);
-  const conformance::Grid grid = check_grid(req, checks);
-  const conformance::Claims claims = check_claims(req, checks);
+  const conformance::CheckLawAsk ask = check_law_ask(checks);
+  const conformance::Grid grid = conformance::check_law_grid(req, ask);
+  const conformance::Claims claims =
+      conformance::check_law_claims(req, ask, oracles::expression_functions());
   conformance::LawUnderTest law = conformance::registry_law(req);
   if (auto name = get<std::string>(checks, "name"); name && !name->empty()) law.name = *name;
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    j = conformance::to_json(conformance::run_conformance(law, claims, grid));
+    j = conformance::check_law_json(conformance::run_conformance(law, claims, grid), req, claims);
   }
-  // what `ivv check-law --json` adds to the verdict (app/check_law.cc)
-  j["law"]["parameters"] = req.parameters;
-  if (req.law == LawKind::expression) {
-    j["law"]["force"] = req.expression.force;
-    j["law"]["unload"] = req.expression.unload;
-    j["law"]["allow_tension"] = req.expression.allow_tension;
-    if (!req.expression.onset_force.empty()) j["law"]["onset_force"] = req.expression.onset_force;
-  }
-  j["law"]["scene"] = req.scene.name;
-  if (claims.expected_cor) j["law"]["expect_cor"] = claims.expected_cor_text;
   return to_python(j);
 }
 
