@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/input_error.h"
 
@@ -166,23 +167,49 @@ double flexural_return_time(const FinitePlate& p, double t_contact) {
   return 2.0 * d / c_g;
 }
 
-std::size_t count_plate_modes(const FinitePlate& p, double omega_cut) {
-  std::size_t count = 0;
+namespace {
+
+// Calls visit(m, n, W) for every excited mode (W(x0, y0)^2 >= kNodalShape) with omega <=
+// omega_cut, m rising and n rising within each m, until visit returns false. The factors
+// sin(n pi y0/b) are tabulated once per n (a sine per mode pair was most of the table's cost).
+template <class Visit>
+void for_each_excited_mode(const FinitePlate& p, double omega_cut, Visit visit) {
+  std::vector<double> sy;
   for (int m = 1; plate_mode_frequency(p, m, 1) <= omega_cut; ++m) {
     const double sx = std::sin(m * pi * p.impact_x / p.length_x);
     for (int n = 1; plate_mode_frequency(p, m, n) <= omega_cut; ++n) {
-      const double sy = std::sin(n * pi * p.impact_y / p.length_y);
-      if (sx * sx * sy * sy >= kNodalShape) ++count;
+      if (static_cast<std::size_t>(n) > sy.size())
+        sy.push_back(std::sin(n * pi * p.impact_y / p.length_y));
+      const double W = sx * sy[static_cast<std::size_t>(n - 1)];
+      if (W * W < kNodalShape) continue;
+      if (!visit(m, n, W)) return;
     }
   }
+}
+
+}  // namespace
+
+std::size_t count_plate_modes(const FinitePlate& p, double omega_cut) {
+  std::size_t count = 0;
+  for_each_excited_mode(p, omega_cut, [&](int, int, double) { return ++count, true; });
   return count;
 }
 
 PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
   if (!(options.omega_cut > 0.0 && std::isfinite(options.omega_cut)))
     throw std::invalid_argument("plate_modes: omega_cut must be finite and > 0");
-  const std::size_t count = count_plate_modes(p, options.omega_cut);
-  if (count > options.max_modes)
+  PlateModes out;
+  out.omega_cut = options.omega_cut;
+  out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
+  for_each_excited_mode(p, options.omega_cut, [&](int m, int n, double W) {
+    if (out.modes.size() == options.max_modes) return false;  // one too many: counted below
+    out.modes.push_back({m, n, plate_mode_frequency(p, m, n), W, W * W / out.modal_mass});
+    return true;
+  });
+  if (const std::size_t count = out.modes.size() < options.max_modes
+                                    ? out.modes.size()
+                                    : count_plate_modes(p, options.omega_cut);
+      count > options.max_modes)
     throw InputError("structure",
                      "the plate needs " + std::to_string(count) + " modes below " +
                          std::to_string(options.omega_cut) + " rad/s, more than the limit of " +
@@ -190,18 +217,6 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
                          ": the plate is large against the contact (no wave returns during it), "
                          "so the infinite plate (remove length_x, length_y) may be the model "
                          "wanted");
-  PlateModes out;
-  out.omega_cut = options.omega_cut;
-  out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
-  out.modes.reserve(count);
-  for (int m = 1; plate_mode_frequency(p, m, 1) <= options.omega_cut; ++m) {
-    const double sx = std::sin(m * pi * p.impact_x / p.length_x);
-    for (int n = 1; plate_mode_frequency(p, m, n) <= options.omega_cut; ++n) {
-      const double W = sx * std::sin(n * pi * p.impact_y / p.length_y);
-      if (W * W < kNodalShape) continue;
-      out.modes.push_back({m, n, plate_mode_frequency(p, m, n), W, W * W / out.modal_mass});
-    }
-  }
   std::sort(out.modes.begin(), out.modes.end(),
             [](const PlateMode& x, const PlateMode& y) { return x.omega < y.omega; });
   out.static_compliance =
