@@ -3,16 +3,17 @@
 //
 // The bound is taken over the slowest modes first. With the modes in the order kept (by
 // increasing omega), each flight mode k has a constant amplitude A_k; for a prefix of L modes
-//   z_kin(s) - z_f <= g_L(s) + T_L,   g_L = alpha(s) - sum_{k<L} u_k(s) - z_f,   T_L = sum_{k>=L}
-//   A_k,
+//   z_kin(s) - z_f <= g_L(s) + T_L,   g_L = alpha(s) - sum_{k<L} u_k(s) - z_f,
+//   T_L = sum_{k>=L} A_k,
 // and |g_L''| <= M2_L = sum_{k<L} omega_k^2 A_k, so no contact occurs within the step of
 // safe_flight_step(-(g_L + T_L), g_L', M2_L). A step costs L modes instead of N; where the slow
 // modes alone cannot clear the gap (T_L above half of it, or a step below the probing step) the
 // next level (4 times the modes) is asked, up to all N (T_N = 0: the exact gap, probed as before
 // where its bound step is short). The levels are N, N/4, N/16, ... down to kSlowestLevel modes,
-// their T_L and M2_L summed once per flight. Measured on the 5 mm ball on the 200 mm plate (1192
-// modes; an impact pulse excites little above a few times pi/t_contact, so T_L is a small part
-// of B already at L ~ N/16): see flight_levels().
+// their T_L and M2_L summed once per flight. Measured (callgrind) on the 5 mm ball on the 200 mm
+// plate, 1192 modes after its one contact: 9.5M instructions and 23 flight steps before (every
+// step all N modes, twice), 0.82M and 13 steps with the levels; e is unchanged (the flight does
+// not change alpha'), only where the flight ends (t_end) moves.
 #pragma once
 
 #include <algorithm>
