@@ -1,11 +1,15 @@
 #include "solver/plate/plate_modes.h"
 
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/bernoulli.hpp>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/input_error.h"
 
@@ -17,6 +21,9 @@ constexpr double pi = std::numbers::pi;
 
 // Exponentials below this are dropped against 1 (the m-term is then exactly its asymptote).
 constexpr double kNegligibleExponent = 40.0;  // e^-40 = 4e-18
+// The most m-terms summed exactly: an impact point within ~1e-6 of an edge (relative) would need
+// more; its tail_bound then says what the asymptote leaves out.
+constexpr double kMaxExactTerms = 2.0e7;
 
 // E(c, theta) of the header, with its derivative in c: decaying exponentials only.
 struct EValue {
@@ -61,11 +68,49 @@ double inner_sum(const Roots& unit, double mu, double theta) {
   return ((f_function(r1, theta).value - f_function(r2, theta).value) / (r2 - r1)).real();
 }
 
-// sum_{m > M} m^-3 by Euler-Maclaurin: 1/(2M^2) - 1/(2M^3) + 1/(4M^4) - 1/(12M^6) + O(M^-8).
-double zeta3_tail(double M) {
-  const double M2 = M * M;
-  return 1.0 / (2.0 * M2) - 1.0 / (2.0 * M2 * M) + 1.0 / (4.0 * M2 * M2) -
-         1.0 / (12.0 * M2 * M2 * M2);
+// The bound on what the asymptote leaves out beyond M (header): f(r) = pi/(4c) + delta(r) with
+//   |d delta/dr| <= (pi eps/(2 (1 - eps)^2)) (1/|c|^3 + 2 pi/|c|^2),   eps = e^{-Re(c) theta_min}
+// (for eps <= 1/7; from delta = (pi/(4c)) (2q - e^{-c theta} - e^{-c(2 pi - theta)})/(1 - q), q =
+// e^{-2 pi c}), and S_m's deviation from its asymptote is a divided difference of delta over the
+// segment [r1, r2] (or -delta' at a double root), so at most that bound there, where Re c >=
+// sqrt(min Re r) = m c_lo. Each m-term carries prefactor sin^2 <= prefactor, eps <= e^{-m x}
+// with x = c_lo theta_min, and the terms beyond M fall at least by e^{-x} each: the sum is at
+// most the first term over (1 - e^{-x}). Infinite (no bound) where eps > 1/7.
+double tail_error_bound(double prefactor, int M, double x, double c_lo) {
+  const double eps = std::exp(-(M + 1.0) * x), c = (M + 1.0) * c_lo;
+  if (!(eps <= 1.0 / 7.0)) return std::numeric_limits<double>::infinity();
+  const double first = prefactor * pi * eps / (2.0 * (1.0 - eps) * (1.0 - eps)) *
+                       (1.0 / (c * c * c) + 2.0 * pi / (c * c));
+  return first / (1.0 - std::exp(-x));
+}
+
+// C3(theta) = sum_{m >= 1} cos(m theta)/m^3 (the Clausen-type function of the header), any
+// theta: reduced to [0, pi] (period 2 pi, even), then
+//   C3 = zeta(3) - 3 theta^2/4 + (theta^2/2) ln theta
+//        - sum_{k >= 1} |B_2k|/(2 (2k)!) theta^{2k+2}/(k (2k+1)(2k+2))
+// (integrated term by term from Cl_2(theta) = theta - theta ln theta + sum_k zeta(2k)
+// theta^{2k+1}/(k (2k+1) (2 pi)^{2k}), Abramowitz & Stegun 27.8.2; zeta(2k)/(2 pi)^{2k} =
+// |B_2k|/(2 (2k)!)). At theta <= pi the k-th term is below pi^2 4^-k/(4 k^3): kClausenTerms
+// leave less than 1e-17; the result carries ~6e-16 of rounding (the three leading terms
+// cancel from ~7 to ~1 at theta = pi).
+constexpr int kClausenTerms = 24;
+double cos_sum_cubed(double theta) {
+  theta = std::fmod(std::abs(theta), 2.0 * pi);
+  if (theta > pi) theta = 2.0 * pi - theta;
+  const double zeta3 = boost::math::constants::zeta_three<double>();
+  if (theta == 0.0) return zeta3;
+  const double t2 = theta * theta;
+  double terms[kClausenTerms + 1];
+  double factorial = 1.0, power = t2;
+  for (int k = 1; k <= kClausenTerms; ++k) {
+    factorial *= (2.0 * k - 1.0) * (2.0 * k);
+    power *= t2;
+    terms[k] = std::abs(boost::math::unchecked_bernoulli_b2n<double>(k)) / (2.0 * factorial) *
+               power / (k * (2.0 * k + 1.0) * (2.0 * k + 2.0));
+  }
+  double series = 0.0;
+  for (int k = kClausenTerms; k >= 1; --k) series += terms[k];  // small terms first
+  return zeta3 - 0.75 * t2 + 0.5 * t2 * std::log(theta) - series;
 }
 
 }  // namespace
@@ -78,29 +123,37 @@ double plate_mode_frequency(const FinitePlate& p, int m, int n) {
   return pi * pi * std::sqrt(k / (p.density * p.thickness));
 }
 
-StaticCompliance plate_static_compliance(const FinitePlate& p) {
+StaticCompliance plate_static_compliance(const FinitePlate& p,
+                                         const StaticComplianceOptions& options) {
   const double a = p.length_x, b = p.length_y;
   const double xi = p.impact_x / a, eta = p.impact_y / b;
   const double theta = 2.0 * pi * eta;
   const Roots unit = unit_roots(p.bending);
   const double prefactor = 4.0 / (a * b) * std::pow(b, 4) / (std::pow(pi, 4) * p.bending.D22);
-  // c = mu c_hat; the exponentials e^{-c min(theta, 2 pi - theta)} negligible from M on
-  const double c_hat_min = std::min(std::sqrt(unit.r1).real(), std::sqrt(unit.r2).real());
+  // Re c >= m c_lo on the segment [r1, r2] (tail_error_bound): the exponentials, at most
+  // e^{-m x}, are negligible from M on
+  const double c_lo = std::sqrt(std::min(unit.r1.real(), unit.r2.real())) * (b / a);
   const double theta_min = std::min(theta, 2.0 * pi - theta);
-  const double M_exp = kNegligibleExponent / (c_hat_min * (b / a) * theta_min);
-  const int M = static_cast<int>(std::clamp(std::ceil(M_exp), 2000.0, 2.0e7));
-  double sum = 0.0;
+  const double x = c_lo * theta_min;
+  const double M_exp = std::ceil(kNegligibleExponent / x);
+  const int M = static_cast<int>(
+      std::clamp(std::max(M_exp, static_cast<double>(options.min_terms)), 1.0, kMaxExactTerms));
+  double sum = 0.0, head = 0.0;   // the exact m-terms; sum sin^2(m pi xi)/m^3 over the same m
   for (int m = M; m >= 1; --m) {  // small terms first
-    const double s = std::sin(m * pi * xi);
-    sum += s * s * inner_sum(unit, m * b / a, theta);
+    const double s = std::sin(m * pi * xi), s2 = s * s;
+    sum += s2 * inner_sum(unit, m * b / a, theta);
+    head += s2 / (static_cast<double>(m) * m * m);
   }
   // the asymptote K sin^2(m pi xi)/m^3: S_m -> (pi/4)/(c1 c2 (c1 + c2)), c_i = m (b/a) c_hat_i
   const cplx c1 = std::sqrt(unit.r1) * (b / a), c2 = std::sqrt(unit.r2) * (b / a);
   const double K = prefactor * (pi / 4.0 / (c1 * c2 * (c1 + c2))).real();
+  // sum_{m > M} sin^2(m pi xi)/m^3 = (zeta(3) - C3(2 pi xi))/2 - head
+  const double zeta3 = boost::math::constants::zeta_three<double>();
+  const double tail = std::max(0.5 * (zeta3 - cos_sum_cubed(2.0 * pi * xi)) - head, 0.0);
   StaticCompliance out;
   out.terms = M;
-  out.value = prefactor * sum + 0.5 * K * zeta3_tail(M);
-  out.tail_bound = 0.5 * K / (std::pow(M + 1.0, 3) * std::sin(pi * xi));
+  out.value = prefactor * sum + K * tail;
+  out.tail_bound = tail_error_bound(prefactor, M, x, c_lo);
   return out;
 }
 
@@ -114,23 +167,49 @@ double flexural_return_time(const FinitePlate& p, double t_contact) {
   return 2.0 * d / c_g;
 }
 
-std::size_t count_plate_modes(const FinitePlate& p, double omega_cut) {
-  std::size_t count = 0;
+namespace {
+
+// Calls visit(m, n, W) for every excited mode (W(x0, y0)^2 >= kNodalShape) with omega <=
+// omega_cut, m rising and n rising within each m, until visit returns false. The factors
+// sin(n pi y0/b) are tabulated once per n (a sine per mode pair was most of the table's cost).
+template <class Visit>
+void for_each_excited_mode(const FinitePlate& p, double omega_cut, Visit visit) {
+  std::vector<double> sy;
   for (int m = 1; plate_mode_frequency(p, m, 1) <= omega_cut; ++m) {
     const double sx = std::sin(m * pi * p.impact_x / p.length_x);
     for (int n = 1; plate_mode_frequency(p, m, n) <= omega_cut; ++n) {
-      const double sy = std::sin(n * pi * p.impact_y / p.length_y);
-      if (sx * sx * sy * sy >= kNodalShape) ++count;
+      if (static_cast<std::size_t>(n) > sy.size())
+        sy.push_back(std::sin(n * pi * p.impact_y / p.length_y));
+      const double W = sx * sy[static_cast<std::size_t>(n - 1)];
+      if (W * W < kNodalShape) continue;
+      if (!visit(m, n, W)) return;
     }
   }
+}
+
+}  // namespace
+
+std::size_t count_plate_modes(const FinitePlate& p, double omega_cut) {
+  std::size_t count = 0;
+  for_each_excited_mode(p, omega_cut, [&](int, int, double) { return ++count, true; });
   return count;
 }
 
 PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
   if (!(options.omega_cut > 0.0 && std::isfinite(options.omega_cut)))
     throw std::invalid_argument("plate_modes: omega_cut must be finite and > 0");
-  const std::size_t count = count_plate_modes(p, options.omega_cut);
-  if (count > options.max_modes)
+  PlateModes out;
+  out.omega_cut = options.omega_cut;
+  out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
+  for_each_excited_mode(p, options.omega_cut, [&](int m, int n, double W) {
+    if (out.modes.size() == options.max_modes) return false;  // one too many: counted below
+    out.modes.push_back({m, n, plate_mode_frequency(p, m, n), W, W * W / out.modal_mass});
+    return true;
+  });
+  if (const std::size_t count = out.modes.size() < options.max_modes
+                                    ? out.modes.size()
+                                    : count_plate_modes(p, options.omega_cut);
+      count > options.max_modes)
     throw InputError("structure",
                      "the plate needs " + std::to_string(count) + " modes below " +
                          std::to_string(options.omega_cut) + " rad/s, more than the limit of " +
@@ -138,18 +217,6 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
                          ": the plate is large against the contact (no wave returns during it), "
                          "so the infinite plate (remove length_x, length_y) may be the model "
                          "wanted");
-  PlateModes out;
-  out.omega_cut = options.omega_cut;
-  out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
-  out.modes.reserve(count);
-  for (int m = 1; plate_mode_frequency(p, m, 1) <= options.omega_cut; ++m) {
-    const double sx = std::sin(m * pi * p.impact_x / p.length_x);
-    for (int n = 1; plate_mode_frequency(p, m, n) <= options.omega_cut; ++n) {
-      const double W = sx * std::sin(n * pi * p.impact_y / p.length_y);
-      if (W * W < kNodalShape) continue;
-      out.modes.push_back({m, n, plate_mode_frequency(p, m, n), W, W * W / out.modal_mass});
-    }
-  }
   std::sort(out.modes.begin(), out.modes.end(),
             [](const PlateMode& x, const PlateMode& y) { return x.omega < y.omega; });
   out.static_compliance =

@@ -29,14 +29,20 @@
 // written with decaying exponentials only (no overflow): S_m = (f(r1) - f(r2))/(r2 - r1), or
 // -f'(r) for roots closer than kDoubleRoot (then the double-root form's error is below
 // kDoubleRoot^2/4 relative and the partial fractions' cancellation is avoided). Once the
-// exponentials are below 1e-17 the m-term is exactly K sin^2(m pi xi)/m^3 (K from c = m c_hat),
-// so the m-sum stops at such an M and its tail is added as
-//   K sum_{m>M} sin^2(m pi xi)/m^3 = (K/2) [zeta_M(3) - sum_{m>M} cos(2 pi xi m)/m^3]
-// with zeta_M(3) = sum_{m>M} m^-3 by Euler-Maclaurin (error O(M^-8)) and the oscillating sum
-// bounded by Abel summation, |.| <= 1/((M + 1)^3 sin(pi xi)): that bound, (K/2) of it, is
-// `tail_bound` (below 1e-10 relative at the default M). This is the Navier double sum done
-// exactly in n; for the isotropic plate at its centre it equals Timoshenko & Woinowsky-Krieger's
-// single (Levy) series, TWK §30 eq. (f)/(g): w = alpha P a^2/D, alpha = 0.01160 for a square plate.
+// exponentials are below e^-40 the m-term is its asymptote K sin^2(m pi xi)/m^3 (K from c_i =
+// m (b/a) sqrt(r_i)), so the m-sum is exact up to such an M (M = 40/(c_lo 2 pi min(eta, 1 -
+// eta)), c_lo = (b/a) sqrt(min Re r_i) at mu = 1; 13 terms at the centre of a square plate) and
+// the rest is summed in closed form:
+//   K sum_{m>M} sin^2(m pi xi)/m^3 = K [(zeta(3) - C3(2 pi xi))/2 - sum_{m<=M} sin^2(m pi xi)/m^3],
+//   C3(phi) = sum_m cos(m phi)/m^3 = zeta(3) - 3 phi^2/4 + (phi^2/2) ln phi
+//             - sum_{k>=1} |B_2k|/(2 (2k)!) phi^{2k+2}/(k (2k+1)(2k+2)),   0 < phi <= pi
+// (term by term from Clausen's Cl_2, Abramowitz & Stegun 27.8.2; C3 is even and 2 pi-periodic).
+// What the asymptote leaves out beyond M is bounded by `tail_bound` (the exponentials'
+// derivative bound, plate_modes.cc: ~1e-19 relative at the threshold); the value carries
+// besides ~1e-15 relative of rounding. This is the Navier double sum done exactly in n and in
+// closed form in m beyond M; for the isotropic plate at its centre it equals Timoshenko &
+// Woinowsky-Krieger's single (Levy) series, TWK §30 eq. (f)/(g): w = alpha P a^2/D, alpha =
+// 0.01160 for a square plate.
 //
 // Truncation: the modes with omega <= omega_cut are kept; the rest respond quasi-statically
 // (mode acceleration / residual flexibility):
@@ -71,10 +77,16 @@ double plate_mode_frequency(const FinitePlate& p, int m, int n);
 
 struct StaticCompliance {
   double value = 0.0;       // C_static [m/N]
-  double tail_bound = 0.0;  // bound on its truncation error [m/N] (the Abel bound above)
+  double tail_bound = 0.0;  // bound on what the closed-form tail leaves out [m/N] (above)
   int terms = 0;            // m-terms summed exactly (M)
 };
-StaticCompliance plate_static_compliance(const FinitePlate& p);
+struct StaticComplianceOptions {
+  // at least this many m-terms summed exactly (more than the threshold needs: the tests'
+  // check that the closed-form tail does not depend on where it starts)
+  int min_terms = 0;
+};
+StaticCompliance plate_static_compliance(const FinitePlate& p,
+                                         const StaticComplianceOptions& options = {});
 
 struct PlateModeOptions {
   double omega_cut = 0.0;          // keep the modes with omega <= omega_cut [rad/s]

@@ -80,10 +80,14 @@ TEST(PlateModes, KeptModesAtTheCentreAreOddOddAndSorted) {
 // TWK's Levy single series for an isotropic plate loaded at its centre (Timoshenko &
 // Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed. 1959, §30):
 //   w = (P a^2/(2 pi^3 D)) sum_{m odd} (1/m^3) [tanh b_m - b_m/cosh^2 b_m],  b_m = m pi b/(2a)
-// written here independently of the double-sum-in-n form of the implementation. Its terms fall
-// as 1/m^3: 200000 of them leave a tail below 1/(2 * 200000^2) * a^2/(2 pi^3 D) ~ 2e-13 a^2/D.
+// written here independently of the implementation (no closed form in n, no Clausen tail). Its
+// terms fall as 1/m^3; beyond m = 399999 the bracket is 1 to double precision (e^-600000) and
+// sum_{m odd > 399999} 1/m^3 = 1/(4 N^2) - 1/(4 N^4) + O(N^-6), N = 400000 (the midpoint rule
+// with step 2 and its error term), added: the series is then exact to rounding, ~1e-15.
 double twk_centre_alpha(double b_over_a) {
   double sum = 0.0;
+  const double N = 400000.0;
+  sum += 1.0 / (4.0 * N * N) - 1.0 / (4.0 * N * N * N * N);
   for (int m = 399999; m >= 1; m -= 2) {
     const double bm = m * pi * b_over_a / 2.0;
     const double sech = bm > 300 ? 0.0 : 1.0 / std::cosh(bm);
@@ -92,17 +96,43 @@ double twk_centre_alpha(double b_over_a) {
   return sum / (2.0 * pi * pi * pi);
 }
 
+// Both are exact series: the implementation within its stated tail bound and ~1e-15 of
+// rounding (plate_modes.h), the Levy sum within rounding of 200000 positive terms summed
+// smallest first (~1e-15): 1e-13 relative leaves room for both and would see the old Abel-bounded
+// tail (3e-11 to 4e-11 relative off at these plates).
+constexpr double kExactSeries = 1e-13;
+
 TEST(PlateStaticCompliance, EqualsTheLevySeriesAtTheCentre) {
   for (double r : {1.0, 1.3, 2.0, 3.0}) {
     const FinitePlate p = steel_plate(0.2, 0.2 * r, 0.1, 0.1 * r);
     const StaticCompliance c = plate_static_compliance(p);
     const double D = p.bending.D11;
-    // both are exact series: the implementation within its stated tail bound (< 1e-10
-    // relative, the Abel bound on the oscillating tail; measured 3e-11 to 4e-11 here), the Levy
-    // sum within 2e-12 relative, and rounding of a few thousand positive terms (~1e-13)
-    EXPECT_LT(c.tail_bound / c.value, 1e-10);
-    EXPECT_NEAR(c.value * D / (0.04 * twk_centre_alpha(r)), 1.0, c.tail_bound / c.value + 1e-11)
-        << "b/a = " << r;
+    EXPECT_LT(c.tail_bound / c.value, 1e-16) << "b/a = " << r;
+    EXPECT_LT(c.terms, 100) << "b/a = " << r;
+    EXPECT_NEAR(c.value * D / (0.04 * twk_centre_alpha(r)), 1.0, kExactSeries) << "b/a = " << r;
+  }
+}
+
+// The closed-form tail in m does not depend on where it starts: the m-sum done exactly to 20000
+// terms (the tail then ~1e-9 of the total) against the default M (tens of terms), for the
+// isotropic plate off its centre, an orthotropic laminate with a complex pair of roots (the
+// drop-weight coupon's D's), and a laminate with real distinct roots (H > sqrt(D11 D22)). Both
+// are the same series summed differently: rounding, ~1e-15, with room.
+TEST(PlateStaticCompliance, ClosedFormTailAgreesWithALongExactSum) {
+  FinitePlate iso = steel_plate(0.2, 0.15, 0.031, 0.052);
+  FinitePlate coupon = steel_plate(0.125, 0.075, 0.0625, 0.0375);
+  coupon.thickness = 0.004;
+  coupon.density = 1580.0;
+  coupon.bending = {432.111, 254.088, 12.7153, 29.3333};
+  FinitePlate real_roots = coupon;
+  real_roots.bending = {300.0, 100.0, 150.0, 60.0};  // H = 270 > sqrt(3e4) = 173
+  real_roots.impact_x = 0.02;
+  for (const FinitePlate& p : {iso, coupon, real_roots}) {
+    const StaticCompliance fast = plate_static_compliance(p);
+    const StaticCompliance slow = plate_static_compliance(p, {.min_terms = 20000});
+    EXPECT_EQ(slow.terms, 20000);
+    EXPECT_LT(fast.terms, 200);
+    EXPECT_NEAR(fast.value / slow.value, 1.0, kExactSeries) << p.length_x << " " << p.impact_x;
   }
 }
 
