@@ -234,5 +234,43 @@ TEST(ExponentialStepper, ShippedPlateScenesAgreeWithDop853) {
   }
 }
 
+// Accuracy at loose tolerances, over cut-offs and tolerances on both shipped scenes: the
+// exponential stepper and DOP853 at rtol 1e-6 and 1e-8 against DOP853 at rtol 1e-10 on the same
+// modes (so the truncation cancels; the two steppers agree to 1e-10 there, the reference's own
+// error). The exponential stepper is within rtol of it (what a run at rtol per step promises for
+// e ~ 0.2 .. 0.9), no farther from it than DOP853 at the same settings or 1e-9 (ten times the
+// reference's error), with the same contacts and reloads. Measured: at most 4e-10 (ball, cut-off
+// 10, rtol 1e-6) against DOP853's 8.4e-8 there; before a reload after a graze of z_m was
+// located (plate_impact_driver.h, missed_reload) the coupon at rtol 1e-6 was off by up to 3.1e-4
+// with 24 .. 33 reloads for 20 .. 22.
+TEST(ExponentialStepper, AtLooseTolerancesAsAccurateAsDop853OnTheShippedScenes) {
+  constexpr double kReferenceError = 1e-9;
+  for (auto [scene, law] : {std::pair{"steel-ball-on-finite-steel-plate", LawKind::hertz},
+                            std::pair{"drop-weight-coupon", LawKind::elastoplastic}}) {
+    const Scene s = load_scene(scene);
+    for (double cutoff : {10.0, 30.0, 60.0}) {
+      PlateImpactOptions o;
+      o.cutoff = cutoff;
+      o.rtol = 1e-10, o.atol = 1e-12;
+      const PlateImpactResult ref = simulate_plate_impact(s, law, {}, o);
+      ASSERT_TRUE(ref.ok) << scene << ": " << ref.reason;
+      for (double rtol : {1e-6, 1e-8}) {
+        o.rtol = rtol, o.atol = rtol * 1e-2;
+        o.stepper = PlateImpactOptions::Stepper::dop853;
+        const PlateImpactResult d = simulate_plate_impact(s, law, {}, o);
+        o.stepper = PlateImpactOptions::Stepper::exponential;
+        const PlateImpactResult x = simulate_plate_impact(s, law, {}, o);
+        ASSERT_TRUE(d.ok && x.ok) << scene << ": " << d.reason << x.reason;
+        const std::string at = std::string(scene) + ", cut-off " + std::to_string(cutoff) +
+                               ", rtol " + std::to_string(rtol);
+        EXPECT_NEAR(x.e, ref.e, rtol) << at;
+        EXPECT_LE(std::abs(x.e - ref.e), std::max(std::abs(d.e - ref.e), kReferenceError)) << at;
+        EXPECT_EQ(x.contacts.size(), ref.contacts.size()) << at;
+        EXPECT_EQ(x.reloads, ref.reloads) << at;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ivv
