@@ -570,4 +570,26 @@ TEST(Cli, FinitePlateSimulateReportsContactsAndModes) {
   EXPECT_NE(bad.err.find("--zeta"), std::string::npos) << bad.err;
 }
 
+// --integrator on a finite plate names its stepper (the exponential one by default), and the JSON
+// says which ran. The two steppers on the same modes at the default rtol 1e-10 per step: e within
+// 1e-7 (N rtol over the coupon's ~1000 steps; measured equal to 10 digits). A sweep runs only the
+// default: any other name is bad input there, not ignored.
+TEST(Cli, FinitePlateIntegratorNamesItsStepper) {
+  const CliRun a = ivv("simulate --scene drop-weight-coupon --json");
+  const CliRun b = ivv("simulate --scene drop-weight-coupon --integrator dop853 --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  EXPECT_EQ(ja["options"]["stepper"], "exponential");
+  EXPECT_EQ(jb["options"]["stepper"], "dop853");
+  EXPECT_NEAR(ja["result"]["e"].get<double>(), jb["result"]["e"].get<double>(), 1e-7);
+  const CliRun rigid_name = ivv("simulate --scene drop-weight-coupon --integrator rodas4");
+  EXPECT_EQ(rigid_name.exit_code, 2);
+  EXPECT_NE(rigid_name.err.find("--integrator"), std::string::npos) << rigid_name.err;
+  const CliRun sweep =
+      ivv("sweep --scene drop-weight-coupon --v0 1,2 --integrator dop853 -q --out /dev/null");
+  EXPECT_EQ(sweep.exit_code, 2);
+  EXPECT_NE(sweep.err.find("--integrator"), std::string::npos) << sweep.err;
+}
+
 }  // namespace

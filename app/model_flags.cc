@@ -52,7 +52,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, ModelFlagSet set) {
   cmd.add_option("--param", f.params,
                  "law parameter NAME=VALUE (repeatable; `ivv laws -v` lists each law's)");
   cmd.add_option("--integrator", f.integrator,
-                 "integrator (see `ivv integrators`), or auto: chosen by stiffness")
+                 "integrator (see `ivv integrators`), or auto: chosen by stiffness; a finite "
+                 "plate: exponential (auto), dop853 or odeint-dopri5")
       ->capture_default_str();
   cmd.add_option("--model", f.model,
                  "auto: what the scene needs within --rtol (exact closed forms where they exist, "

@@ -243,7 +243,8 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
                                  ? nlohmann::json(flexural_return_time(plate, run.result.t_contact))
                                  : nlohmann::json(nullptr)}}},
       {"options",
-       {{"rtol", run.options.rtol},
+       {{"stepper", plate_stepper_name(run.options.stepper)},
+        {"rtol", run.options.rtol},
         {"atol", run.options.atol},
         {"truncation_tol", run.options.truncation_tol}}},
       {"truncation",

@@ -206,6 +206,8 @@ std::string plate_impact_summary(const PlateRun& run) {
       << "  truncation   cut-off " << r.cutoff << ", e at cut-off " << r.cutoff_coarser << " "
       << run.e_half_cutoff << ": the modes left out cost about " << run.truncation_error
       << " in e (tolerance " << run.options.truncation_tol << ")\n"
+      << "  stepper      " << plate_stepper_name(run.options.stepper) << " at rtol "
+      << run.options.rtol << ", " << r.steps << " steps\n"
       << "  contacts     " << r.contacts.size() << ", F_max = " << r.F_max
       << " N, t_contact = " << r.t_contact << " s (the first contact)\n";
   for (std::size_t i = 0; i < r.contacts.size() && i < 20; ++i) {

@@ -115,6 +115,7 @@ SimulationRequest to_sweep_base(const RequestOptions& o) {
 SimulationRequest to_sweep_base(Scene scene, const RequestOptions& o) {
   if (!has_finite_plate(scene)) return to_request(std::move(scene), o);
   refuse_dashpot_and_integrator_flags(o);
+  refuse_stepper_choice(o, "a sweep");
   if (o.model != "auto" && o.model != "full")
     throw InputError("--model", "a sweep on a finite plate runs the full plate: auto or full");
   SimulationRequest req;
@@ -132,6 +133,7 @@ SimulationRequest to_sweep_base(Scene scene, const RequestOptions& o) {
 SimulationRequest to_check_law_request(Scene scene, const RequestOptions& o) {
   if (!has_finite_plate(scene)) return to_request(std::move(scene), o);
   refuse_dashpot_and_integrator_flags(o);
+  refuse_stepper_choice(o, "check-law");
   Scene without_plate = scene;
   without_plate.damping = Damping::none();
   SimulationRequest req = to_request(std::move(without_plate), o);

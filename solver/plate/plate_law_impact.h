@@ -143,7 +143,13 @@ void run_plate_driver(const Law& law, const Scales& k, const PlateModes& modes, 
       PlateImpactDriver<Law, OdeintDenseDopri5<System>>(law, k, modes, m, opt).run(out);
       return;
     case PlateImpactOptions::Stepper::exponential:
-      PlateImpactDriver<Law, PlateExponentialStepper<System>>(law, k, modes, m, opt).run(out);
+      // No mode kept (cut-off 0, the quasi-static plate): nothing to propagate exactly, and the
+      // stepper's modal tables would be empty; the impactor against C_static alone is a
+      // two-state ODE, stepped by dop853.
+      if (modes.modes.empty())
+        PlateImpactDriver<Law, Dop853Stepper<System>>(law, k, modes, m, opt).run(out);
+      else
+        PlateImpactDriver<Law, PlateExponentialStepper<System>>(law, k, modes, m, opt).run(out);
       return;
   }
 }

@@ -16,6 +16,24 @@ void refuse_for_plate(bool given, const char* flag, const char* why) {
 
 }  // namespace
 
+PlateImpactOptions::Stepper plate_stepper(const std::string& integrator) {
+  using Stepper = PlateImpactOptions::Stepper;
+  if (integrator == "auto" || integrator == "exponential") return Stepper::exponential;
+  if (integrator == "dop853") return Stepper::dop853;
+  if (integrator == "odeint-dopri5") return Stepper::odeint_dopri5;
+  throw InputError("--integrator",
+                   "a finite plate is stepped by exponential (auto, the default), dop853 or "
+                   "odeint-dopri5; got '" +
+                       integrator + "'");
+}
+
+void refuse_stepper_choice(const RequestOptions& o, const char* what) {
+  if (o.integrator != "auto")
+    throw InputError("--integrator", std::string(what) +
+                                         " on a finite plate runs the exponential stepper: "
+                                         "auto (--integrator chooses it in `ivv simulate`)");
+}
+
 void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
   const char* dashpot =
       "its modes carry the energy away; without length_x/length_y the plate "
@@ -24,8 +42,8 @@ void refuse_dashpot_and_integrator_flags(const RequestOptions& o) {
   refuse_for_plate(o.c.has_value(), "--c", dashpot);
   refuse_for_plate(o.lambda.has_value(), "--lambda", dashpot);
   refuse_for_plate(o.no_dashpot, "--no-dashpot", dashpot);
-  const char* own = "the plate's modes are integrated by dop853 with event location";
-  refuse_for_plate(o.integrator != "auto", "--integrator", own);
+  (void)plate_stepper(o.integrator);
+  const char* own = "the plate's steppers are adaptive, with event location";
   refuse_for_plate(o.dt.has_value(), "--dt", own);
   refuse_for_plate(o.max_steps.has_value(), "--max-steps", own);
 }
@@ -82,6 +100,7 @@ PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
           run.options.rtol);
   require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",
           run.options.atol);
+  run.options.stepper = plate_stepper(o.integrator);
   run.options.truncation_tol = kPlateTruncationTol;
   run.options.cutoff = kPlateFirstCutoff;
   const SimulationRequest request = run.law_request();

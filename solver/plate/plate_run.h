@@ -58,6 +58,12 @@ PlateRun run_plate_simulation(const RequestOptions& options);
 // The refusals above alone (InputError naming the flag), for a front end that applies the
 // overrides to a scene before it runs (the Python module's ivv.scene).
 void refuse_dashpot_and_integrator_flags(const RequestOptions& options);
+// The stepper --integrator names on a finite plate: auto or exponential (the default), dop853,
+// odeint-dopri5 (PlateImpactOptions::Stepper); InputError("--integrator") for any other name.
+PlateImpactOptions::Stepper plate_stepper(const std::string& integrator);
+// A command that runs its own plate steppers (a sweep, check-law) refuses --integrator other
+// than auto: InputError("--integrator") saying `what` runs the exponential stepper.
+void refuse_stepper_choice(const RequestOptions& options, const char* what);
 // The same for a scene the front end already holds (the Python module): options.scene is not
 // read.
 PlateRun run_plate_simulation(Scene scene, const RequestOptions& options);
