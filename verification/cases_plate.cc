@@ -16,6 +16,7 @@
 #include "scene/structure.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/plate/plate_modes.h"
+#include "solver/plate/steel_ball_on_plate.h"
 #include "solver/simulate.h"
 #include "verification/cases.h"
 #include "verification/support.h"
@@ -38,17 +39,8 @@ Structure steel_plate(double a, double b, double h) {
 
 // The shipped steel-ball-on-steel-plate scene (5 mm steel ball, 4.168 g, 1 m/s) on a plate.
 Scene ball_on(const Structure& st, double yield_strength = 0.0) {
-  Scene s;
+  Scene s = steel_ball_on(st, yield_strength > 0.0 ? std::optional(yield_strength) : std::nullopt);
   s.name = "steel-ball-on-finite-plate";
-  s.mass = 0.004168;
-  s.radius = 0.005;
-  s.impactor_youngs_modulus = 207e9;
-  s.impactor_poisson_ratio = 0.3;
-  s.target_youngs_modulus = 207e9;
-  s.target_poisson_ratio = 0.3;
-  if (yield_strength > 0.0) s.yield_strength = yield_strength;
-  s.velocity = 1.0;
-  s.damping = Damping::from_structure(st);
   return s;
 }
 

@@ -10,9 +10,9 @@
 
 namespace ivv {
 
-// a, b, h [m]; yield [Pa] the target's yield strength (none: an elastic target).
-inline Scene steel_ball_on_plate(double a, double b, double h,
-                                 std::optional<double> yield = std::nullopt) {
+// The ball at 1 m/s striking `structure` (its dashpot, or its modes when finite); yield [Pa] the
+// target's yield strength (none: an elastic target).
+inline Scene steel_ball_on(const Structure& structure, std::optional<double> yield = std::nullopt) {
   Scene s;
   s.mass = 0.004168;
   s.radius = 0.005;
@@ -22,6 +22,13 @@ inline Scene steel_ball_on_plate(double a, double b, double h,
   s.target_poisson_ratio = 0.3;
   s.yield_strength = yield;
   s.velocity = 1.0;
+  s.damping = Damping::from_structure(structure);
+  return s;
+}
+
+// a, b, h [m]; yield [Pa] the target's yield strength (none: an elastic target).
+inline Scene steel_ball_on_plate(double a, double b, double h,
+                                 std::optional<double> yield = std::nullopt) {
   Structure st;
   st.kind = Structure::Kind::plate;
   st.thickness = h;
@@ -29,8 +36,7 @@ inline Scene steel_ball_on_plate(double a, double b, double h,
   st.length_x = a;
   st.length_y = b;
   st.edges = PlateEdges::simply_supported;
-  s.damping = Damping::from_structure(st);
-  return s;
+  return steel_ball_on(st, yield);
 }
 
 }  // namespace ivv
