@@ -98,8 +98,42 @@ std::string sweep_csv_inputs(const PointInputs& inputs) {
   return s;
 }
 
-void append_sweep_csv_row(std::string& row, const PointInputs& in, const ImpactResult& r) {
-  append_inputs(row, in);
+SweepInputColumns::SweepInputColumns(const SweepRequest& request) : request_(&request) {
+  auto text = [](double x) {
+    std::string s;
+    append_shortest(s, x);
+    return s + ',';
+  };
+  for (double v : request.velocities) velocities_.push_back(text(v));
+  if (!request.scene_dashpot)
+    for (double z : request.zetas) zetas_.push_back(text(z));
+  for (const SceneAxis& axis : request.axes) {
+    axes_.emplace_back();
+    for (double v : axis.values) axes_.back().push_back(text(v));
+  }
+}
+
+void SweepInputColumns::append(std::string& row, std::size_t index) const {
+  const GridPosition at = grid_position(*request_, index);
+  row += velocities_[at.velocity];
+  if (request_->scene_dashpot) {  // the zeta the scene's dashpot gives at this point
+    append_shortest(row, point_inputs(*request_, index).zeta);
+    row += ',';
+  } else {
+    row += zetas_[at.zeta];
+  }
+  if (axes_.empty()) return;
+  const std::size_t first = row.size();
+  std::size_t rest = at.axes;
+  for (std::size_t k = axes_.size(); k-- > 0;) {  // the last axis fastest: filled back to front
+    const std::vector<std::string>& values = axes_[k];
+    row.insert(first, values[rest % values.size()]);
+    rest /= values.size();
+  }
+}
+
+SweepRowFacts append_sweep_csv_results(std::string& row, std::size_t row_start,
+                                       const ImpactResult& r) {
   if (r.ok()) {
     for (double x : {r.e, r.e_poisson, r.e_energetic, r.F_max, r.t_F_max, r.t_contact, r.z_max,
                      r.alpha_max, r.z_perm, r.energy.residual}) {
@@ -110,10 +144,18 @@ void append_sweep_csv_row(std::string& row, const PointInputs& in, const ImpactR
     row.append(10, ',');  // no number is better than a plausible wrong one
   }
   append_integer(row, r.steps);
-  for (std::string_view name : {r.route, r.integrator, to_string(r.status)}) {
-    row += ',';
-    row += name;
-  }
+  SweepRowFacts facts;
+  facts.status = r.status;
+  row += ',';
+  facts.route = row.size() - row_start;
+  facts.route_size = r.route.size();
+  row += r.route;
+  row += ',';
+  facts.integrator = row.size() - row_start;
+  facts.integrator_size = r.integrator.size();
+  row += r.integrator;
+  row += ',';
+  row += to_string(r.status);
   row += ',';
   if (!r.reason.empty()) {
     row += '"';
@@ -126,6 +168,13 @@ void append_sweep_csv_row(std::string& row, const PointInputs& in, const ImpactR
     row += "\"failed without a reason\"";
   }
   row += '\n';
+  return facts;
+}
+
+void append_sweep_csv_row(std::string& row, const PointInputs& in, const ImpactResult& r) {
+  const std::size_t start = row.size();
+  append_inputs(row, in);
+  append_sweep_csv_results(row, start, r);
 }
 
 std::string sweep_csv_row(const PointInputs& inputs, const ImpactResult& r) {

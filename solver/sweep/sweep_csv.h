@@ -12,6 +12,7 @@
 // RFC 4180).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,38 @@ std::string sweep_csv_columns_text(const std::vector<SceneAxis>& axes = {});
 
 // "v0,zeta,axis values,": the start of a point's row (a journal row read back must begin so).
 std::string sweep_csv_inputs(const PointInputs& inputs);
+
+// The input columns of every point of a grid, formatted once for the whole sweep: a point's are
+// then copied, not formatted again (the two shortest round-trip numbers of a v0 x zeta row were
+// ~1,100 of its ~5,800 instructions, callgrind on the 300 x 300 map). The same bytes as
+// sweep_csv_inputs(point_inputs(request, index)); a sweep that keeps the scene's dashpot derives
+// each point's zeta, so that column is formatted point by point. Refers to `request`, which must
+// outlive it.
+class SweepInputColumns {
+ public:
+  explicit SweepInputColumns(const SweepRequest& request);
+  // Appends point `index`'s "v0,zeta,axis values," to `row`.
+  void append(std::string& row, std::size_t index) const;
+
+ private:
+  const SweepRequest* request_;
+  // each value followed by its comma: per velocity, per zeta (none with the scene's dashpot),
+  // per value of each scene axis
+  std::vector<std::string> velocities_, zetas_;
+  std::vector<std::vector<std::string>> axes_;
+};
+
+// Where the counts of a sweep (SweepCounts) find their facts in a row: the route and integrator
+// names as offsets from the row's first character, and the status.
+struct SweepRowFacts {
+  std::size_t route = 0, route_size = 0, integrator = 0, integrator_size = 0;
+  ImpactStatus status = ImpactStatus::failed;
+};
+
+// The result columns of a row, "e,...,reason\n", appended to `row`, whose row began at
+// `row_start`: returns the row's facts (their offsets from `row_start`), known as it is written.
+SweepRowFacts append_sweep_csv_results(std::string& row, std::size_t row_start,
+                                       const ImpactResult& result);
 // The row of a point (numbers by std::to_chars, solver/format.h), appended to `row`: no
 // allocation once its capacity suffices.
 void append_sweep_csv_row(std::string& row, const PointInputs& inputs, const ImpactResult& result);

@@ -144,14 +144,6 @@ std::size_t zeta_count(const SweepRequest& req) {
   return req.scene_dashpot ? 1 : req.zetas.size();
 }
 
-struct GridIndex {
-  std::size_t velocity = 0, zeta = 0, axes = 0;  // axes: the mixed-radix rest
-};
-GridIndex split(const SweepRequest& req, std::size_t index) {
-  const std::size_t na = axis_points(req), per_velocity = zeta_count(req) * na;
-  return {index / per_velocity, index % per_velocity / na, index % na};
-}
-
 // The value of every scene axis at the mixed-radix index `rest` (last axis fastest).
 std::vector<double> axis_values(const SweepRequest& req, std::size_t rest) {
   std::vector<double> values(req.axes.size());
@@ -170,12 +162,17 @@ void apply_axes(const SweepRequest& req, const std::vector<double>& values, Scen
 
 }  // namespace
 
+GridPosition grid_position(const SweepRequest& req, std::size_t index) {
+  const std::size_t na = axis_points(req), per_velocity = zeta_count(req) * na;
+  return {index / per_velocity, index % per_velocity / na, index % na};
+}
+
 std::size_t point_count(const SweepRequest& req) {
   return req.velocities.size() * zeta_count(req) * axis_points(req);
 }
 
 SimulationRequest point_request(const SweepRequest& req, std::size_t index) {
-  const GridIndex at = split(req, index);
+  const GridPosition at = grid_position(req, index);
   SimulationRequest r = req.base;
   r.scene.velocity = req.velocities[at.velocity];
   if (!req.scene_dashpot) {
@@ -187,7 +184,7 @@ SimulationRequest point_request(const SweepRequest& req, std::size_t index) {
 }
 
 PointInputs point_inputs(const SweepRequest& req, std::size_t index) {
-  const GridIndex at = split(req, index);
+  const GridPosition at = grid_position(req, index);
   PointInputs p{req.velocities[at.velocity], 0.0, axis_values(req, at.axes)};
   if (!req.scene_dashpot) {
     p.zeta = req.zetas[at.zeta];

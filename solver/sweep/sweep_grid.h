@@ -68,6 +68,13 @@ inline constexpr std::size_t kMaxSceneAxes = 8;
 void validate(const SweepRequest& request);
 
 std::size_t point_count(const SweepRequest& request);
+// Where point `index` lies on the grid: the indices of its velocity and of its zeta (0 when every
+// point keeps the scene's dashpot) and the mixed-radix index of its scene axes' values (the last
+// axis fastest: axis k's value index is (axes / (n_{k+1} n_{k+2} ...)) % n_k).
+struct GridPosition {
+  std::size_t velocity = 0, zeta = 0, axes = 0;
+};
+GridPosition grid_position(const SweepRequest& request, std::size_t index);
 // The simulation request of point `index`.
 SimulationRequest point_request(const SweepRequest& request, std::size_t index);
 

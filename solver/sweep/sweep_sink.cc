@@ -21,11 +21,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// FNV-1a, 64 bit: a stable fingerprint of a sweep's inputs for its journal.
-std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 0xcbf29ce484222325ULL) {
+// FNV-1a, 64 bit: a stable fingerprint of a sweep's inputs for its journal, and of each row.
+std::uint64_t fnv1a(std::string_view s, std::uint64_t h = 0xcbf29ce484222325ULL) {
   for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ULL;
   return h;
 }
+
+// A journal line's head, "index 0123456789abcdef ", as printf's "%zu %016llx " wrote it.
+constexpr std::size_t kChecksumDigits = 16;
 
 // One journal line "index checksum row" (row without its newline): the index and the row
 // (newline restored) when the index is below `total` and the checksum matches; nullopt for a
@@ -51,6 +54,50 @@ std::optional<std::pair<std::size_t, std::string>> parse_journal_line(const std:
 
 }  // namespace
 
+std::uint64_t sweep_journal_checksum(std::string_view row) {
+  return fnv1a(row);
+}
+
+// ---- SweepRowBatch ---------------------------------------------------------------------------
+
+std::string& SweepRowBatch::begin_row(std::size_t index) {
+  Entry e;
+  e.index = index;
+  e.begin = text_.size();
+  char head[24];
+  char* end = std::to_chars(head, head + sizeof head, index).ptr;
+  *end++ = ' ';
+  text_.append(head, end);
+  text_.append(kChecksumDigits, '0');  // end_row writes the checksum here
+  text_ += ' ';
+  e.head_size = text_.size() - e.begin;
+  entries_.push_back(e);
+  return text_;
+}
+
+void SweepRowBatch::end_row(const SweepRowFacts& facts) {
+  Entry& e = entries_.back();
+  e.size = text_.size() - e.row_begin();
+  const std::uint64_t sum = sweep_journal_checksum(std::string_view(text_).substr(e.row_begin()));
+  char* digits = text_.data() + e.row_begin() - 1 - kChecksumDigits;
+  for (std::size_t k = 0; k < kChecksumDigits; ++k)
+    digits[k] = "0123456789abcdef"[(sum >> (4 * (kChecksumDigits - 1 - k))) & 0xf];
+  e.facts = facts;
+  e.has_facts = true;
+}
+
+void SweepRowBatch::add(std::size_t index, std::string_view row) {
+  begin_row(index).append(row);
+  end_row({});
+  entries_.back().has_facts = false;
+}
+
+void SweepRowBatch::clear() {
+  text_.clear();
+  entries_.clear();
+  next_ = 0;
+}
+
 fs::path SweepSink::journal_path() const {
   return fs::path(options_.csv.string() + ".journal");
 }
@@ -72,7 +119,7 @@ SweepSink::SweepSink(const SweepRequest& request, SweepOutputOptions options)
                      "a sweep to standard output (--out -) keeps no journal, so it cannot be "
                      "resumed: give --out FILE to have one");
   std::lock_guard lock(mutex_);
-  write_row(sweep_csv_header(request.axes));
+  write_rows(sweep_csv_header(request.axes));
   if (std::fflush(options_.stream) != 0) stream_failed();
 }
 
@@ -177,10 +224,10 @@ std::uintmax_t SweepSink::read_journal_rows(std::istream& in, const SweepRequest
       ++damaged_;
       continue;
     }
-    if (row->first < next_write_ || pending_.count(row->first)) continue;  // first one wins
+    if (row->first < next_write_ || resumed_rows_.count(row->first)) continue;  // first one wins
     count(row->second, facts(row->second));
     ++resumed_;
-    pending_.emplace(row->first, std::move(row->second));
+    resumed_rows_.emplace(row->first, std::move(row->second));
     write_ready();  // streams contiguous rows out: memory stays within the window
   }
   return whole;
@@ -196,7 +243,7 @@ std::size_t SweepSink::done() const {
   return resumed_ + delivered_;
 }
 
-SweepSink::RowFacts SweepSink::facts(const std::string& row) const {
+SweepRowFacts SweepSink::facts(std::string_view row) const {
   // the three columns in one pass over the row (the fields up to the status column, numbers and
   // the route and integrator names, hold no commas)
   std::array<std::size_t, 3> at{}, size{};  // route, integrator, status
@@ -211,22 +258,21 @@ SweepSink::RowFacts SweepSink::facts(const std::string& row) const {
       }
     pos = end + 1;
   }
-  RowFacts out{at[0], size[0], at[1], size[1], ImpactStatus::failed};
-  const std::string_view s = std::string_view(row).substr(at[2], size[2]);
+  SweepRowFacts out{at[0], size[0], at[1], size[1], ImpactStatus::failed};
+  const std::string_view s = row.substr(at[2], size[2]);
   if (s == to_string(ImpactStatus::separated)) out.status = ImpactStatus::separated;
   if (s == to_string(ImpactStatus::captured)) out.status = ImpactStatus::captured;
   return out;
 }
 
-void SweepSink::count(const std::string& row, const RowFacts& facts) {
+void SweepSink::count(std::string_view row, const SweepRowFacts& facts) {
   auto tally = [](std::map<std::string, std::size_t, std::less<>>& counts, std::string_view name) {
     auto it = counts.find(name);
     if (it == counts.end()) it = counts.emplace(std::string(name), 0).first;
     ++it->second;
   };
-  const std::string_view text(row);
-  tally(counts_.routes, text.substr(facts.route, facts.route_size));
-  tally(counts_.integrators, text.substr(facts.integrator, facts.integrator_size));
+  tally(counts_.routes, row.substr(facts.route, facts.route_size));
+  tally(counts_.integrators, row.substr(facts.integrator, facts.integrator_size));
   if (facts.status == ImpactStatus::separated)
     ++counts_.separated;
   else if (facts.status == ImpactStatus::captured)
@@ -261,107 +307,143 @@ std::vector<std::size_t> SweepSink::take_locked(std::unique_lock<std::mutex>& lo
       continue;
     }
     while (out.size() < max && cursor_ < total_ && cursor_ < next_write_ + options_.window) {
-      if (!pending_.count(cursor_)) out.push_back(cursor_);  // resumed rows are not rerun
+      if (!resumed_rows_.count(cursor_)) out.push_back(cursor_);  // resumed rows are not rerun
       ++cursor_;
     }
   }
   return out;
 }
 
-SweepSink::PreparedRow SweepSink::prepare(std::size_t index, std::string row) const {
-  PreparedRow p;
-  // "index checksum " as printf's "%zu %016llx " wrote it
-  char* end = std::to_chars(p.head.data(), p.head.data() + 20, index).ptr;
-  *end++ = ' ';
-  const std::uint64_t sum = fnv1a(row);
-  for (int shift = 60; shift >= 0; shift -= 4) *end++ = "0123456789abcdef"[(sum >> shift) & 0xf];
-  *end++ = ' ';
-  p.head_size = static_cast<std::size_t>(end - p.head.data());
-  p.index = index;
-  p.row = std::move(row);
-  p.facts = facts(p.row);
-  return p;
+void SweepSink::prepare(SweepRowBatch& rows) const {
+  std::vector<SweepRowBatch::Entry>& entries = rows.entries_;
+  auto by_index = [](const SweepRowBatch::Entry& a, const SweepRowBatch::Entry& b) {
+    return a.index < b.index;
+  };
+  if (!std::is_sorted(entries.begin(), entries.end(), by_index))
+    std::stable_sort(entries.begin(), entries.end(), by_index);
+  entries.erase(std::unique(entries.begin(), entries.end(),
+                            [](const SweepRowBatch::Entry& a, const SweepRowBatch::Entry& b) {
+                              return a.index == b.index;  // delivered twice: the first kept
+                            }),
+                entries.end());
+  for (SweepRowBatch::Entry& e : entries)
+    if (!e.has_facts) {
+      e.facts = facts(std::string_view(rows.text_).substr(e.row_begin(), e.size));
+      e.has_facts = true;
+    }
 }
 
-void SweepSink::record(PreparedRow&& p) {
-  if (p.index < next_write_ || pending_.count(p.index)) return;  // delivered: keep the first
-  if (journal_ && (std::fwrite(p.head.data(), 1, p.head_size, journal_) != p.head_size ||
-                   std::fwrite(p.row.data(), 1, p.row.size(), journal_) != p.row.size()))
-    io_error(journal_path(), std::strerror(errno));
-  count(p.row, p.facts);
-  ++delivered_;
-  // the next row of the output, with nothing waiting before it (every row of a one-thread
-  // sweep): written at once, without a node of the reorder map (one allocation a row)
-  if (p.index == next_write_ && pending_.empty()) {
-    write_row(p.row);
-    ++next_write_;
-    wrote_ = true;
-    return;
+bool SweepSink::delivered_before(std::size_t index) const {
+  if (index < next_write_ || resumed_rows_.count(index)) return true;
+  for (const SweepRowBatch& b : parked_) {
+    const auto at = std::partition_point(
+        b.entries_.begin() + static_cast<std::ptrdiff_t>(b.next_), b.entries_.end(),
+        [&](const SweepRowBatch::Entry& e) { return e.index < index; });
+    if (at != b.entries_.end() && at->index == index) return true;
   }
-  pending_.emplace(p.index, std::move(p.row));
+  return false;
 }
 
 void SweepSink::deliver(std::size_t index, const std::string& row) {
-  PreparedRow p = prepare(index, row);
-  std::lock_guard lock(mutex_);
-  record(std::move(p));
-  if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
-  write_ready();
-  if (options_.stream && std::fflush(options_.stream) != 0) stream_failed();
+  SweepRowBatch rows;
+  rows.add(index, row);
+  deliver(rows);
 }
 
-void SweepSink::deliver(std::vector<std::pair<std::size_t, std::string>> rows) {
-  std::vector<PreparedRow> prepared = prepare(std::move(rows));
-  std::lock_guard lock(mutex_);
-  record_batch(prepared);
+void SweepSink::deliver(const std::vector<std::pair<std::size_t, std::string>>& rows) {
+  SweepRowBatch batch;
+  for (const auto& [index, row] : rows) batch.add(index, row);
+  deliver(batch);
 }
 
-std::vector<std::size_t> SweepSink::deliver_and_take(
-    std::vector<std::pair<std::size_t, std::string>> rows, std::size_t max) {
-  std::vector<PreparedRow> prepared = prepare(std::move(rows));
+void SweepSink::deliver(SweepRowBatch& rows) {
+  prepare(rows);
+  std::lock_guard lock(mutex_);
+  record_batch(rows);
+}
+
+std::vector<std::size_t> SweepSink::deliver_and_take(SweepRowBatch& rows, std::size_t max) {
+  prepare(rows);
   std::unique_lock lock(mutex_);
-  record_batch(prepared);
+  record_batch(rows);
   return take_locked(lock, max, WhenAhead::wait);
 }
 
-std::vector<SweepSink::PreparedRow> SweepSink::prepare(
-    std::vector<std::pair<std::size_t, std::string>> rows) const {
-  // the checksums and the parse of each row before the lock: two workers that finish a batch
-  // together wait for each other only for the copies into the journal and the CSV (with them
-  // inside, two threads on the 300 x 300 map met at the lock on nearly every batch: 6,600
-  // futex calls, strace -f)
-  std::vector<PreparedRow> prepared;
-  prepared.reserve(rows.size());
-  for (auto& [index, row] : rows) prepared.push_back(prepare(index, std::move(row)));
-  return prepared;
-}
-
-void SweepSink::record_batch(std::vector<PreparedRow>& prepared) {
-  for (PreparedRow& p : prepared) record(std::move(p));
+void SweepSink::record_batch(SweepRowBatch& rows) {
+  std::vector<SweepRowBatch::Entry>& entries = rows.entries_;
+  entries.erase(std::remove_if(entries.begin(), entries.end(),
+                               [&](const SweepRowBatch::Entry& e) {
+                                 return delivered_before(e.index);  // keep the first
+                               }),
+                entries.end());
+  // the journal lines, a run of adjacent ones at a time (a whole batch of a worker in one)
+  for (std::size_t k = 0; journal_ && k < entries.size();) {
+    const std::size_t begin = entries[k].begin;
+    std::size_t end = entries[k].end();
+    while (++k < entries.size() && entries[k].begin == end) end = entries[k].end();
+    if (std::fwrite(rows.text_.data() + begin, 1, end - begin, journal_) != end - begin)
+      io_error(journal_path(), std::strerror(errno));
+  }
   if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
+  for (const SweepRowBatch::Entry& e : entries)
+    count(std::string_view(rows.text_).substr(e.row_begin(), e.size), e.facts);
+  delivered_ += entries.size();
+  // the batch's contents wait here until written; the worker gets an emptied batch's buffers
+  if (!entries.empty()) {
+    SweepRowBatch spare;
+    if (!spare_.empty()) {
+      spare = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    parked_.push_back(std::move(rows));
+    parked_.back().next_ = 0;
+    rows = std::move(spare);
+  }
+  rows.clear();
   write_ready();
   if (options_.stream && std::fflush(options_.stream) != 0) stream_failed();
 }
 
 void SweepSink::write_ready() {
-  bool wrote = wrote_;
-  wrote_ = false;
-  for (auto it = pending_.begin(); it != pending_.end() && it->first == next_write_;
-       it = pending_.erase(it), ++next_write_) {
-    write_row(it->second);
+  bool wrote = false;
+  for (;;) {
+    if (auto r = resumed_rows_.begin(); r != resumed_rows_.end() && r->first == next_write_) {
+      write_rows(r->second);
+      resumed_rows_.erase(r);
+      ++next_write_;
+      wrote = true;
+      continue;
+    }
+    auto b = std::find_if(parked_.begin(), parked_.end(), [&](const SweepRowBatch& p) {
+      return p.entries_[p.next_].index == next_write_;
+    });
+    if (b == parked_.end()) break;
+    // the batch's rows from here while they are the next ones (delivered rows are never
+    // resumed ones: those are not handed out)
+    const std::vector<SweepRowBatch::Entry>& entries = b->entries_;
+    std::size_t k = b->next_;
+    for (; k < entries.size() && entries[k].index == next_write_; ++k, ++next_write_)
+      write_rows(std::string_view(b->text_).substr(entries[k].row_begin(), entries[k].size));
+    b->next_ = k;
     wrote = true;
+    if (k == entries.size()) {  // written whole: its buffers are a spare
+      b->clear();
+      spare_.push_back(std::move(*b));
+      if (b != parked_.end() - 1) *b = std::move(parked_.back());
+      parked_.pop_back();
+    }
   }
   if (wrote) written_cv_.notify_all();
 }
 
-void SweepSink::write_row(const std::string& row) {
+void SweepSink::write_rows(std::string_view rows) {
   if (!options_.stream) {
-    if (std::fputs(row.c_str(), partial_) < 0)
+    if (std::fwrite(rows.data(), 1, rows.size(), partial_) != rows.size())
       io_error(options_.csv.string() + ".partial", std::strerror(errno));
     return;
   }
   if (output_errno_ != 0) return;  // the reader is gone: the rows have nowhere to go
-  if (std::fwrite(row.data(), 1, row.size(), options_.stream) != row.size()) stream_failed();
+  if (std::fwrite(rows.data(), 1, rows.size(), options_.stream) != rows.size()) stream_failed();
 }
 
 void SweepSink::stream_failed() {

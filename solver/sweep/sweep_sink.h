@@ -22,10 +22,12 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "solver/result.h"
+#include "solver/sweep/sweep_csv.h"
 #include "solver/sweep/sweep_grid.h"
 
 namespace ivv {
@@ -54,6 +56,50 @@ struct SweepOutputOptions {
   // no journal, no partial, no resume (resume must be false), no sidecar; `csv` only names the
   // output in messages.
   std::FILE* stream = nullptr;
+};
+
+// The FNV-1a (64 bit) checksum of a journal row (with its newline): "index checksum row" lines.
+std::uint64_t sweep_journal_checksum(std::string_view row);
+
+// Finished rows on their way to a SweepSink, built by one worker: the rows' text back to back,
+// and for each its point's index, its place in the text, its journal checksum and its facts
+// (SweepRowFacts). A worker keeps one batch and reuses it: the sink takes a delivered batch's
+// contents and hands back buffers of a batch it has written, so after the first batches no row
+// allocates, and no buffer is freed on another thread than the one that allocated it.
+class SweepRowBatch {
+ public:
+  // The text to append point `index`'s row to (its bytes from text().size() on); then end_row()
+  // with the facts of the row appended (append_sweep_csv_results gives them).
+  std::string& begin_row(std::size_t index);
+  void end_row(const SweepRowFacts& facts);
+  // A row made elsewhere (read back, or from an MPI rank): its facts are read from it by the
+  // sink that receives it.
+  void add(std::size_t index, std::string_view row);
+  void clear();  // keeps the buffers
+  bool empty() const { return entries_.empty(); }
+  std::size_t size() const { return entries_.size(); }
+  std::size_t index(std::size_t k) const { return entries_[k].index; }
+  std::string_view row(std::size_t k) const {
+    return std::string_view(text_).substr(entries_[k].row_begin(), entries_[k].size);
+  }
+
+ private:
+  friend class SweepSink;
+  // text_ holds each row as its journal line, "index checksum row": the journal takes the lines,
+  // the CSV the rows (the checksum is filled in by end_row, outside the sink's lock).
+  struct Entry {
+    std::size_t index = 0;
+    std::size_t begin = 0;      // the journal line's first character in text_
+    std::size_t head_size = 0;  // "index checksum "
+    std::size_t size = 0;       // the row's, newline included
+    SweepRowFacts facts;
+    bool has_facts = false;  // false: add()ed; the sink reads them from the row
+    std::size_t row_begin() const { return begin + head_size; }
+    std::size_t end() const { return begin + head_size + size; }
+  };
+  std::string text_;
+  std::vector<Entry> entries_;
+  std::size_t next_ = 0;  // the sink's: the first entry not yet written to the output
 };
 
 // Journal, reorder window and partial CSV of one sweep (or the reorder window and a stream).
@@ -92,15 +138,15 @@ class SweepSink {
   bool exhausted() const;
 
   // Records a finished point: appended to the journal (flushed), then written to the partial
-  // CSV once every earlier point is written.
+  // CSV once every earlier point is written. A point delivered twice keeps its first row.
   void deliver(std::size_t index, const std::string& row);
-  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal. The
-  // rows are moved into the sink.
-  void deliver(std::vector<std::pair<std::size_t, std::string>> rows);
+  // The same for a batch (e.g. a chunk from another MPI rank): one flush of the journal.
+  void deliver(const std::vector<std::pair<std::size_t, std::string>>& rows);
+  // The same for a worker's batch: `rows` comes back empty, with buffers to reuse.
+  void deliver(SweepRowBatch& rows);
   // deliver(rows), then take(max, WhenAhead::wait) in the same hold of the lock: one lock a batch
   // for a worker that goes on (two, delivering and taking apart, met more often at the lock).
-  std::vector<std::size_t> deliver_and_take(std::vector<std::pair<std::size_t, std::string>> rows,
-                                            std::size_t max);
+  std::vector<std::size_t> deliver_and_take(SweepRowBatch& rows, std::size_t max);
 
   // When every point is done: `before_commit` (e.g. the sidecar), the CSV written atomically,
   // journal and partial removed; returns true. Otherwise leaves journal and partial for
@@ -125,34 +171,24 @@ class SweepSink {
   // for --resume and returns false; otherwise stages the CSV (a copy of the partial), calls
   // `between`, which commits it (and a sidecar around it), then removes journal and partial.
   bool commit_csv(const std::function<void(StagedFile& csv)>& between);
-  // What the counts take from a row: where its route and integrator are, and its status.
-  struct RowFacts {
-    std::size_t route = 0, route_size = 0, integrator = 0, integrator_size = 0;
-    ImpactStatus status = ImpactStatus::failed;
-  };
-  // A finished row with its journal line's head ("index checksum ") and its facts, made before
-  // the lock is taken.
-  struct PreparedRow {
-    std::size_t index = 0;
-    std::string row;
-    std::array<char, 48> head{};
-    std::size_t head_size = 0;
-    RowFacts facts;
-  };
-  RowFacts facts(const std::string& row) const;
-  PreparedRow prepare(std::size_t index, std::string row) const;
-  std::vector<PreparedRow> prepare(std::vector<std::pair<std::size_t, std::string>> rows) const;
-  void record_batch(std::vector<PreparedRow>& rows);  // caller holds mutex_; flushes
+  SweepRowFacts facts(std::string_view row) const;
+  // Outside the lock: orders the batch's entries by index (the first of a repeated index kept)
+  // and reads the facts of rows that came without them.
+  void prepare(SweepRowBatch& rows) const;
+  // Caller holds mutex_: journals the rows not delivered before (one flush), counts them, and
+  // writes what is ready; the batch's contents stay in the sink until written, `rows` gets
+  // spare buffers.
+  void record_batch(SweepRowBatch& rows);
+  bool delivered_before(std::size_t index) const;  // caller holds mutex_
   std::vector<std::size_t> take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
                                        WhenAhead when_ahead);
-  void write_ready();                                         // caller holds mutex_
-  void record(PreparedRow&& row);                             // caller holds mutex_
-  void count(const std::string& row, const RowFacts& facts);  // caller holds mutex_
+  void write_ready();                                            // caller holds mutex_
+  void count(std::string_view row, const SweepRowFacts& facts);  // caller holds mutex_
   // Reads the journal's rows after its header into pending_ (and the partial CSV); returns the
   // bytes of its whole lines.
   std::uintmax_t read_journal_rows(std::istream& in, const SweepRequest& request);
   void open_journal(const SweepRequest& request);  // the constructor's file work
-  void write_row(const std::string& row);          // to the partial CSV or the stream
+  void write_rows(std::string_view rows);          // to the partial CSV or the stream
   void stream_failed();  // records errno of a failed write to the stream and stops the sweep
 
   SweepOutputOptions options_;
@@ -168,8 +204,12 @@ class SweepSink {
   std::size_t cursor_ = 0;      // next index to hand out
   std::size_t next_write_ = 0;  // first index not yet in the partial CSV
   std::size_t delivered_ = 0;
-  std::map<std::size_t, std::string> pending_;  // finished, waiting for earlier points
-  bool wrote_ = false;  // record() wrote a row directly since write_ready() last notified
+  // Rows read back from the journal (--resume), waiting for earlier points; they are not
+  // handed out again.
+  std::map<std::size_t, std::string> resumed_rows_;
+  // Delivered batches waiting for earlier points (each from its next_ entry on), and emptied
+  // ones whose buffers go back to the workers (no allocation a row, none freed across threads).
+  std::vector<SweepRowBatch> parked_, spare_;
   SweepCounts counts_;
   std::FILE* journal_ = nullptr;
   std::FILE* partial_ = nullptr;
