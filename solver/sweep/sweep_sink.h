@@ -58,7 +58,8 @@ struct SweepOutputOptions {
   std::FILE* stream = nullptr;
 };
 
-// The FNV-1a (64 bit) checksum of a journal row (with its newline): "index checksum row" lines.
+// The checksum of a journal row (with its newline), 64 bits, eight bytes of the row a step: the
+// journal's lines are "index checksum row" (checksum in 16 hex digits).
 std::uint64_t sweep_journal_checksum(std::string_view row);
 
 // Finished rows on their way to a SweepSink, built by one worker: the rows' text back to back,

@@ -563,6 +563,99 @@ TEST(SweepStream, AReaderThatStopsReadingStopsTheSweep) {
   std::fclose(stream);
 }
 
+// ---- rows made once, written in order -------------------------------------------------------
+
+// The input columns formatted once a sweep are the bytes of the inputs formatted point by point:
+// on a v0 x zeta grid, with scene axes (the last fastest), and with the scene's dashpot (zeta
+// derived at each point).
+TEST(SweepCsv, InputColumnsAreThoseOfEachPointFormattedAlone) {
+  SweepRequest dashpot;
+  dashpot.base.scene = load_scene("paper");
+  dashpot.base.scene.damping = Damping::coefficient(40.0);
+  dashpot.velocities = {0.5, 2.0, 3.1};
+  dashpot.scene_dashpot = true;
+  for (const SweepRequest& req : {paper_grid(7, 5), paper_grid_with_axes(), dashpot}) {
+    const SweepInputColumns columns(req);
+    for (std::size_t i = 0; i < point_count(req); ++i) {
+      std::string row = "x", expected = "x";  // appended after what the row holds already
+      columns.append(row, i);
+      expected += sweep_csv_inputs(point_inputs(req, i));
+      EXPECT_EQ(row, expected) << i;
+    }
+  }
+}
+
+// The facts the counts take from a row (route, integrator, status) are where the row has them,
+// for a separated, a captured and a failed row (whose result columns are empty).
+TEST(SweepCsv, RowFactsPointAtTheRowsOwnColumns) {
+  ImpactResult separated = simulate(point_request(paper_grid(2, 2), 0));
+  ASSERT_TRUE(separated.separated()) << separated.reason;
+  ImpactResult captured = separated;
+  captured.status = ImpactStatus::captured;
+  ImpactResult failed;
+  failed.route = "closed-form-elastoplastic";
+  failed.reason = "a \"quoted\" reason";
+  for (const ImpactResult& r : {separated, captured, failed}) {
+    std::string row = "0.1,0,";
+    const SweepRowFacts f = append_sweep_csv_results(row, 0, r);
+    EXPECT_EQ(row, sweep_csv_row(0.1, 0.0, r));
+    EXPECT_EQ(row.substr(f.route, f.route_size), r.route);
+    EXPECT_EQ(row.substr(f.integrator, f.integrator_size), r.integrator);
+    EXPECT_EQ(row[f.route - 1], ',');
+    EXPECT_EQ(row.substr(f.integrator + f.integrator_size, to_string(r.status).size() + 2),
+              "," + std::string(to_string(r.status)) + ",");
+    EXPECT_EQ(f.status, r.status);
+  }
+}
+
+// The journal's row checksum changes with any one byte of a row changed (a digit edited, a
+// status rewritten a byte at a time) and with the row cut short at any length.
+TEST(SweepSink, JournalChecksumSeesEveryOneByteEditAndEveryCut) {
+  const std::string row = run_sweep_point(paper_grid(3, 3), 4);
+  const std::uint64_t sum = sweep_journal_checksum(row);
+  for (std::size_t k = 0; k < row.size(); ++k)
+    for (char c : {'0', '9', ',', '\n', '\0'}) {
+      if (row[k] == c) continue;
+      std::string edited = row;
+      edited[k] = c;
+      EXPECT_NE(sweep_journal_checksum(edited), sum) << k << " " << int(c);
+    }
+  for (std::size_t n = 0; n < row.size(); ++n)
+    EXPECT_NE(sweep_journal_checksum(std::string_view(row).substr(0, n)), sum) << n;
+}
+
+// Batches delivered out of order (a worker ahead of another), one of them unsorted, and a point
+// delivered twice: the CSV holds every row once, in grid order, the first delivery of a point
+// kept, and the counts count each point once. The delivered batch comes back empty.
+TEST(SweepSink, BatchesOutOfOrderGiveTheRowsInGridOrderOnce) {
+  const SweepRequest req = paper_grid(5, 3);
+  const std::string expected = run_to_csv(req, scratch("batches-whole.csv"), false);
+  std::vector<std::string> rows;
+  for (std::size_t i = 0; i < point_count(req); ++i) rows.push_back(run_sweep_point(req, i));
+  const fs::path csv = scratch("batches.csv");
+  SweepSink sink(req, {csv, false, "test"});
+  ASSERT_EQ(sink.take(100, SweepSink::WhenAhead::return_empty).size(), 15u);
+  SweepRowBatch batch;
+  auto deliver = [&](std::vector<std::size_t> indices) {
+    for (std::size_t i : indices) batch.add(i, rows[i]);
+    sink.deliver(batch);
+    EXPECT_TRUE(batch.empty());
+  };
+  deliver({10, 11, 12, 13, 14});
+  deliver({9, 5, 7, 6, 8});  // unsorted
+  EXPECT_EQ(sink.written(), 0u);
+  batch.add(7, "a second row of point 7 is dropped\n");
+  deliver({3, 4});
+  batch.add(1, rows[1]);
+  batch.add(1, "a second row of point 1 in the same batch is dropped\n");
+  deliver({0, 2});
+  EXPECT_EQ(sink.written(), 15u);
+  EXPECT_EQ(sink.done(), 15u);
+  ASSERT_TRUE(sink.finish({}));
+  EXPECT_EQ(slurp(csv), expected);
+  EXPECT_EQ(sink.counts().separated + sink.counts().captured + sink.counts().failed, 15u);
+}
+
 // A sweep of the drop-weight coupon over v0 and the laminate's thickness: each row is the full
 // plate's run at that point (the same numbers as simulate_plate_impact), no zeta.
 SweepRequest coupon_grid() {

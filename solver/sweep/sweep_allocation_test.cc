@@ -1,0 +1,94 @@
+// Heap allocations of a sweep's rows on their way to the CSV, counted by replacing the global
+// operator new in this test binary (as solver/allocation_test.cc does for an impact).
+//
+// A worker's rows go into a SweepRowBatch it keeps; the sink takes a delivered batch's contents
+// and hands back the buffers of one it has written. Once the buffers have grown to a batch's
+// size, formatting rows and delivering them allocates nothing, however many rows: so no row's
+// memory is ever freed on another thread than the one that allocated it.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <new>
+
+#include "solver/sweep/sweep.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+// As in solver/allocation_test.cc: the replacements pair std::malloc with std::free (the
+// -Wmismatched-new-delete warning under ASan is a false positive for them).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+#pragma GCC diagnostic pop
+
+namespace ivv {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Rows of a 40 x 50 grid formatted from one separated and one captured result into a batch of
+// `batch` rows at a time and delivered to a sink writing a journal and a partial CSV; returns
+// the allocations after the first `warm` batches (when the buffers have grown).
+long allocations_of_rows(std::size_t batch, std::size_t warm) {
+  SweepRequest req;
+  req.base.scene = paper_scene();
+  req.velocities = log_grid(0.1, 10.0, 40);
+  req.zetas = linear_grid(0.0, 1.0, 50);
+  ImpactResult separated = simulate(point_request(req, 7));
+  EXPECT_TRUE(separated.separated()) << separated.reason;
+  ImpactResult captured = separated;
+  captured.status = ImpactStatus::captured;
+  const fs::path csv =
+      fs::temp_directory_path() / ("ivv_sweep_allocation_" + std::to_string(getpid()) + ".csv");
+  long allocations = 0;
+  {
+    SweepSink sink(req, {csv, false, "test"});
+    const SweepInputColumns inputs(req);
+    SweepRowBatch rows;
+    long before = g_allocations.load();
+    for (std::size_t first = 0, b = 0; first < sink.total(); first += batch, ++b) {
+      if (b == warm) before = g_allocations.load();
+      for (std::size_t i = first; i < first + batch && i < sink.total(); ++i) {
+        std::string& text = rows.begin_row(i);
+        const std::size_t start = text.size();
+        inputs.append(text, i);
+        rows.end_row(append_sweep_csv_results(text, start, i % 3 ? separated : captured));
+      }
+      sink.deliver(rows);
+    }
+    allocations = g_allocations.load() - before;
+    EXPECT_TRUE(sink.finish({}));
+  }
+  fs::remove(csv);
+  return allocations;
+}
+
+// One worker's batch and the sink's spare trade two text buffers; each grows by doubling, so a
+// later batch a few characters longer than every earlier one (rows differ in length) may still
+// grow each of them once more: at most two allocations after the warm-up, against one a row
+// (2,000 here) without the reuse.
+constexpr long kMaxLateGrowths = 2;
+
+TEST(SweepAllocations, RowsAllocateNothingOnceTheBatchBuffersHaveGrown) {
+  EXPECT_LE(allocations_of_rows(32, 2), kMaxLateGrowths);
+  EXPECT_LE(allocations_of_rows(7, 2), kMaxLateGrowths);
+}
+
+}  // namespace
+}  // namespace ivv
