@@ -134,12 +134,17 @@ void SweepInputColumns::append(std::string& row, std::size_t index) const {
 
 SweepRowFacts append_sweep_csv_results(std::string& row, std::size_t row_start,
                                        const ImpactResult& r) {
-  if (r.ok()) {
-    for (double x : {r.e, r.e_poisson, r.e_energetic, r.F_max, r.t_F_max, r.t_contact, r.z_max,
-                     r.alpha_max, r.z_perm, r.energy.residual}) {
-      append_general(row, x, kResultDigits);
-      row += ',';
+  if (r.ok()) {  // formatted into one buffer, appended once (ten appends were ~500 instructions)
+    const std::array<double, 10> numbers = {r.e,       r.e_poisson,      r.e_energetic, r.F_max,
+                                            r.t_F_max, r.t_contact,      r.z_max,       r.alpha_max,
+                                            r.z_perm,  r.energy.residual};
+    std::array<char, numbers.size() * (kMaxNumberChars + 1)> text;
+    char* end = text.data();
+    for (double x : numbers) {
+      end = write_general(end, x, kResultDigits);
+      *end++ = ',';
     }
+    row.append(text.data(), end);
   } else {
     row.append(10, ',');  // no number is better than a plausible wrong one
   }
