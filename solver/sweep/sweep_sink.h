@@ -21,6 +21,7 @@
 #include <istream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -39,7 +40,8 @@ struct SweepCounts {
   // rows per route and per integrator (the CSV's columns): what --model auto and
   // --integrator auto chose over the grid
   // (std::less<>: a row's name is looked up as a string_view, with no string made for it)
-  std::map<std::string, std::size_t, std::less<>> routes, integrators;
+  using Tally = std::map<std::string, std::size_t, std::less<>>;
+  Tally routes, integrators;
 };
 
 struct SweepOutputOptions {
@@ -212,6 +214,8 @@ class SweepSink {
   // ones whose buffers go back to the workers (no allocation a row, none freed across threads).
   std::vector<SweepRowBatch> parked_, spare_;
   SweepCounts counts_;
+  // the entries of counts_ the last row counted went to (map iterators outlive insertions)
+  std::optional<SweepCounts::Tally::iterator> last_route_, last_integrator_;
   std::FILE* journal_ = nullptr;
   std::FILE* partial_ = nullptr;
   std::vector<char> journal_buffer_, partial_buffer_;  // their stdio buffers (setvbuf)
