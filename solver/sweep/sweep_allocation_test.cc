@@ -79,11 +79,11 @@ long allocations_of_rows(std::size_t batch, std::size_t warm) {
   return allocations;
 }
 
-// One worker's batch and the sink's spare trade two text buffers; each grows by doubling, so a
-// later batch a few characters longer than every earlier one (rows differ in length) may still
-// grow each of them once more: at most two allocations after the warm-up, against one a row
-// (2,000 here) without the reuse.
-constexpr long kMaxLateGrowths = 2;
+// One worker's batch and the sink's spare trade their buffers, two texts each (the rows and
+// their journal lines); each grows by doubling, so a later batch a few characters longer than
+// every earlier one (rows differ in length) may still grow each text once more: at most four
+// allocations after the warm-up, against one a row (2,000 here) without the reuse.
+constexpr long kMaxLateGrowths = 4;
 
 TEST(SweepAllocations, RowsAllocateNothingOnceTheBatchBuffersHaveGrown) {
   EXPECT_LE(allocations_of_rows(32, 2), kMaxLateGrowths);

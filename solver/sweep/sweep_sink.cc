@@ -85,26 +85,27 @@ std::string& SweepRowBatch::begin_row(std::size_t index) {
   Entry e;
   e.index = index;
   e.begin = text_.size();
-  char head[24];
-  char* end = std::to_chars(head, head + sizeof head, index).ptr;
-  *end++ = ' ';
-  text_.append(head, end);
-  text_.append(kChecksumDigits, '0');  // end_row writes the checksum here
-  text_ += ' ';
-  e.head_size = text_.size() - e.begin;
   entries_.push_back(e);
   return text_;
 }
 
 void SweepRowBatch::end_row(const SweepRowFacts& facts) {
   Entry& e = entries_.back();
-  e.size = text_.size() - e.row_begin();
-  const std::uint64_t sum = sweep_journal_checksum(std::string_view(text_).substr(e.row_begin()));
-  char* digits = text_.data() + e.row_begin() - 1 - kChecksumDigits;
-  for (std::size_t k = 0; k < kChecksumDigits; ++k)
-    digits[k] = "0123456789abcdef"[(sum >> (4 * (kChecksumDigits - 1 - k))) & 0xf];
+  e.size = text_.size() - e.begin;
   e.facts = facts;
   e.has_facts = true;
+  const std::string_view row = std::string_view(text_).substr(e.begin, e.size);
+  const std::uint64_t sum = sweep_journal_checksum(row);
+  char head[48];
+  char* end = std::to_chars(head, head + 24, e.index).ptr;
+  *end++ = ' ';
+  for (std::size_t k = 0; k < kChecksumDigits; ++k)
+    *end++ = "0123456789abcdef"[(sum >> (4 * (kChecksumDigits - 1 - k))) & 0xf];
+  *end++ = ' ';
+  e.line_begin = journal_.size();
+  journal_.append(head, end);
+  journal_.append(row);
+  e.line_size = journal_.size() - e.line_begin;
 }
 
 void SweepRowBatch::add(std::size_t index, std::string_view row) {
@@ -115,6 +116,7 @@ void SweepRowBatch::add(std::size_t index, std::string_view row) {
 
 void SweepRowBatch::clear() {
   text_.clear();
+  journal_.clear();
   entries_.clear();
   next_ = 0;
 }
@@ -356,7 +358,7 @@ void SweepSink::prepare(SweepRowBatch& rows) const {
                 entries.end());
   for (SweepRowBatch::Entry& e : entries)
     if (!e.has_facts) {
-      e.facts = facts(std::string_view(rows.text_).substr(e.row_begin(), e.size));
+      e.facts = facts(std::string_view(rows.text_).substr(e.begin, e.size));
       e.has_facts = true;
     }
 }
@@ -406,15 +408,15 @@ void SweepSink::record_batch(SweepRowBatch& rows) {
                 entries.end());
   // the journal lines, a run of adjacent ones at a time (a whole batch of a worker in one)
   for (std::size_t k = 0; journal_ && k < entries.size();) {
-    const std::size_t begin = entries[k].begin;
-    std::size_t end = entries[k].end();
-    while (++k < entries.size() && entries[k].begin == end) end = entries[k].end();
-    if (std::fwrite(rows.text_.data() + begin, 1, end - begin, journal_) != end - begin)
+    const std::size_t begin = entries[k].line_begin;
+    std::size_t end = begin + entries[k].line_size;
+    while (++k < entries.size() && entries[k].line_begin == end) end += entries[k].line_size;
+    if (std::fwrite(rows.journal_.data() + begin, 1, end - begin, journal_) != end - begin)
       io_error(journal_path(), std::strerror(errno));
   }
   if (journal_ && std::fflush(journal_) != 0) io_error(journal_path(), std::strerror(errno));
   for (const SweepRowBatch::Entry& e : entries)
-    count(std::string_view(rows.text_).substr(e.row_begin(), e.size), e.facts);
+    count(std::string_view(rows.text_).substr(e.begin, e.size), e.facts);
   delivered_ += entries.size();
   // the batch's contents wait here until written; the worker gets an emptied batch's buffers
   if (!entries.empty()) {
@@ -447,11 +449,18 @@ void SweepSink::write_ready() {
     });
     if (b == parked_.end()) break;
     // the batch's rows from here while they are the next ones (delivered rows are never
-    // resumed ones: those are not handed out)
+    // resumed ones: those are not handed out), in one write while adjacent in the batch's text
     const std::vector<SweepRowBatch::Entry>& entries = b->entries_;
     std::size_t k = b->next_;
-    for (; k < entries.size() && entries[k].index == next_write_; ++k, ++next_write_)
-      write_rows(std::string_view(b->text_).substr(entries[k].row_begin(), entries[k].size));
+    while (k < entries.size() && entries[k].index == next_write_) {
+      const std::size_t begin = entries[k].begin;
+      std::size_t end = begin + entries[k].size;
+      for (++k, ++next_write_;
+           k < entries.size() && entries[k].index == next_write_ && entries[k].begin == end;
+           ++k, ++next_write_)
+        end += entries[k].size;
+      write_rows(std::string_view(b->text_).substr(begin, end - begin));
+    }
     b->next_ = k;
     wrote = true;
     if (k == entries.size()) {  // written whole: its buffers are a spare

@@ -83,24 +83,22 @@ class SweepRowBatch {
   std::size_t size() const { return entries_.size(); }
   std::size_t index(std::size_t k) const { return entries_[k].index; }
   std::string_view row(std::size_t k) const {
-    return std::string_view(text_).substr(entries_[k].row_begin(), entries_[k].size);
+    return std::string_view(text_).substr(entries_[k].begin, entries_[k].size);
   }
 
  private:
   friend class SweepSink;
-  // text_ holds each row as its journal line, "index checksum row": the journal takes the lines,
-  // the CSV the rows (the checksum is filled in by end_row, outside the sink's lock).
+  // text_ holds the rows back to back, as the CSV takes them; journal_ the same rows as journal
+  // lines, "index checksum row" (made by end_row, outside the sink's lock). A worker's batch
+  // then goes to each file in one write.
   struct Entry {
     std::size_t index = 0;
-    std::size_t begin = 0;      // the journal line's first character in text_
-    std::size_t head_size = 0;  // "index checksum "
-    std::size_t size = 0;       // the row's, newline included
+    std::size_t begin = 0, size = 0;            // the row in text_, newline included
+    std::size_t line_begin = 0, line_size = 0;  // its journal line in journal_
     SweepRowFacts facts;
     bool has_facts = false;  // false: add()ed; the sink reads them from the row
-    std::size_t row_begin() const { return begin + head_size; }
-    std::size_t end() const { return begin + head_size + size; }
   };
-  std::string text_;
+  std::string text_, journal_;
   std::vector<Entry> entries_;
   std::size_t next_ = 0;  // the sink's: the first entry not yet written to the output
 };
