@@ -148,7 +148,10 @@ BenchTarget target(std::string name, double bound, std::string unit, double meas
 }
 
 // A finite plate's impact (solver/plate/plate_impact.h): work against error over the mode count
-// (cut-off 10 ... 80 at rtol 1e-6 and 1e-8, each below the reference's), each |de| against
+// (cut-off 10 ... 80 at rtol 1e-5, 1e-6 and 1e-8, each below the reference's; the exponential
+// stepper's per-step estimate is conservative, its order ~11 against the estimate's 9, so e often
+// moves by less than 1e-10 between 1e-5 and 1e-6: measured on the ball with the oscillator at
+// cut-off 20, 1.4e-11 in 0.75 of the instructions), each |de| against
 // the same plate with the static compliance at cut-off c_r = 160 and rtol 1e-13 (--quick: 80 and
 // 1e-12) extrapolated in the cut-off: its error falls as cut-off^-3 (case
 // plate.convergence.with-residual), so e_ref = e(c_r) + (e(c_r) - e(c_r/2))/7 (Richardson), which
@@ -234,7 +237,7 @@ void add_plate_target(const std::string& name, const std::string& scene, LawKind
   std::string how = ref.how;
   for (const PlateSetting& setting : kPlateSettings)
     for (double cutoff : {10.0, 14.0, 20.0, 24.0, 30.0, 40.0, 50.0, 60.0, 80.0})
-      for (double rtol : {1e-6, 1e-8}) {
+      for (double rtol : {1e-5, 1e-6, 1e-8}) {
         if (!ref.result.ok || cutoff >= ref.options.cutoff) break;
         PlateImpactOptions o;
         o.stepper = setting.stepper;
