@@ -42,7 +42,7 @@ namespace ivv {
 struct ConvolutionOptions {
   double dt = 0.0;            // grid step [s]
   double t_max = 1.0;         // give up beyond this time [s] (a named failure)
-  bool residual = true;       // add C_res F (as PlateImpactOptions::residual)
+  bool residual = true;       // add C_res F (as PlateImpactOptions::dropped = static_compliance)
   bool record_force = false;  // keep the force at every grid point (ConvolutionResult::force)
 };
 

@@ -68,6 +68,7 @@
 #include "scene/scene.h"
 #include "solver/laws/law_parameters.h"
 #include "solver/laws/law_registry.h"
+#include "solver/plate/plate_modes.h"
 #include "solver/result.h"
 
 namespace ivv {
@@ -101,7 +102,10 @@ struct PlateImpactOptions {
   // header, `cutoff` the first one tried; 0: `cutoff` as given, no estimate.
   double truncation_tol = 0.0;
   std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
-  bool residual = true;           // false: drop C_res (plain truncation, for the convergence study)
+  // The modes above the cut-off (plate_modes.h): their static compliance C_res in series with
+  // the spring (the default), one equivalent oscillator matching C_res and D_res (a faster order
+  // in the cut-off), or nothing (plain truncation, for the convergence study).
+  DroppedModes dropped = DroppedModes::static_compliance;
   // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h),
   // Boost.Odeint's dense dopri5 (a second integrator for the same equations), or the exponential
   // collocation of exponential_stepper.h (the modes advanced exactly for a polynomial force).
@@ -163,14 +167,17 @@ struct PlateImpactResult {
   // With options.truncation_tol: the rule's estimate of |e - e(all modes)| (units of v0), from
   // e at the coarser cut-off of the last pair; NaN at a fixed cut-off.
   double truncation_error = nan;
-  double cutoff_coarser = nan;       // c' of the last pair
-  double e_coarser = nan;            // e(c')
-  int cutoff_runs = 1;               // runs made to choose the cut-off (this one included)
-  double static_compliance = nan;    // C_static [m/N]
-  double residual_compliance = nan;  // C_res used [m/N] (0 when options.residual is false)
-  double plate_mass = nan;           // rho h a b [kg]
-  double excursion_bound = nan;      // B at the end [m]
-  double t_end = nan;                // when no further contact was possible [s]
+  double cutoff_coarser = nan;     // c' of the last pair
+  double e_coarser = nan;          // e(c')
+  int cutoff_runs = 1;             // runs made to choose the cut-off (this one included)
+  double static_compliance = nan;  // C_static [m/N]
+  // C_res of the dropped modes [m/N] (0 when options.dropped is truncated; with the oscillator
+  // its static compliance, not in series with the spring)
+  double residual_compliance = nan;
+  double residual_omega = nan;   // omega_e of the equivalent oscillator [rad/s] (when used)
+  double plate_mass = nan;       // rho h a b [kg]
+  double excursion_bound = nan;  // B at the end [m]
+  double t_end = nan;            // when no further contact was possible [s]
   PlateEnergy energy;
   int compression_maxima = 0;  // maxima of z (zdot = 0 falling), all contacts
   int reloads = 0;             // z rising back to z_m within a contact (loading on beyond it)

@@ -69,6 +69,23 @@ TEST(PlateImpact, RepeatedContactsKeepTheLedgerAndTheImpulse) {
     EXPECT_GT(r.contacts[i].t_start, r.contacts[i - 1].t_end);
 }
 
+// The dropped modes as one equivalent oscillator (plate_modes.h) are a mode like the kept ones:
+// on the small plate's repeated contacts the ledger holds with its energy among the modes', and
+// momentum as before; the static C_res is not in series with the spring then.
+TEST(PlateImpact, TheResidualOscillatorKeepsTheLedger) {
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
+  PlateImpactOptions opt;
+  opt.cutoff = 20.0;
+  opt.dropped = DroppedModes::oscillator;
+  const PlateImpactResult r = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_GT(r.residual_omega, r.omega_cut);
+  EXPECT_GT(r.residual_compliance, 0.0);
+  EXPECT_LT(r.energy.max_error, kLedger);
+  EXPECT_NEAR((r.energy.kinetic + r.energy.plate) / r.energy.initial, 1.0, kLedger);
+  EXPECT_NEAR(r.impulse, s.mass * (1.0 + r.e), 1e-12);
+}
+
 // The elastoplastic law on a flexible plate: z has several maxima in one contact (the plate's
 // vibration reloads the spring), the ledger holds with the plastic work, and W_p is the loop
 // area of the largest z_m (reloading below z_m retraces the unloading curve).

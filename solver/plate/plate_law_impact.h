@@ -160,13 +160,17 @@ PlateImpactResult plate_impact_at_cutoff(const Law& law, const PlateSetup& setup
                                          const DerivedParameters& p, const PlateImpactOptions& opt,
                                          double cutoff) {
   PlateModes modes;
+  // no mode kept: the plate is static (plate_regime.h's quasi-static model), whatever opt.dropped
+  PlateImpactOptions run = opt;
   if (cutoff == 0.0) {
     modes = static_plate_modes(setup.plate);
+    if (run.dropped == DroppedModes::oscillator) run.dropped = DroppedModes::static_compliance;
   } else {
     PlateModeOptions mo;
     mo.omega_cut = cutoff * setup.omega_s;
     mo.max_modes = opt.max_modes;
     mo.static_compliance = setup.static_compliance;
+    mo.residual_moment = run.dropped == DroppedModes::oscillator;
     modes = plate_modes(setup.plate, mo);
   }
   PlateImpactResult out;
@@ -174,11 +178,14 @@ PlateImpactResult plate_impact_at_cutoff(const Law& law, const PlateSetup& setup
   out.cutoff = cutoff;
   out.omega_cut = modes.omega_cut;
   out.static_compliance = modes.static_compliance.value;
-  out.residual_compliance = opt.residual ? modes.residual_compliance : 0.0;
+  out.residual_compliance =
+      run.dropped == DroppedModes::truncated ? 0.0 : modes.residual_compliance;
+  if (run.dropped == DroppedModes::oscillator)
+    out.residual_omega = residual_oscillator(modes).omega;
   out.plate_mass = setup.plate.mass();
   catching_plate_failures(out, [&] {
     if constexpr (!Law::rate_dependent)
-      run_plate_driver(law, setup.scales, modes, p.effective_mass, opt, out);
+      run_plate_driver(law, setup.scales, modes, p.effective_mass, run, out);
     close_plate_ledger(law, out);
   });
   return out;

@@ -226,7 +226,50 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
     kept += it->gain / (it->omega * it->omega);
   out.kept_compliance = kept;
   out.residual_compliance = out.static_compliance.value - kept;
+  if (options.residual_moment)
+    out.residual_moment = dropped_compliance_moment(p, options.omega_cut);
   return out;
+}
+
+double plate_gain_density(const FinitePlate& p) {
+  const OrthotropicBending& d = p.bending;
+  const double H = d.D12 + 2.0 * d.D66;
+  // Q(phi)^(-1/2) is even about 0 and pi/2 (a smooth periodic function of 2 phi), so the
+  // trapezoidal rule over [0, pi/2] converges geometrically; 64 panels are exact to rounding for
+  // any D11/D22 up to ~1e3
+  constexpr int kPanels = 64;
+  double I = 0.0;
+  for (int j = 0; j <= kPanels; ++j) {
+    const double phi = 0.5 * pi * j / kPanels, c2 = std::cos(phi) * std::cos(phi),
+                 s2 = std::sin(phi) * std::sin(phi);
+    const double Q = d.D11 * c2 * c2 + 2.0 * H * c2 * s2 + d.D22 * s2 * s2;
+    I += (j == 0 || j == kPanels ? 0.5 : 1.0) / std::sqrt(Q);
+  }
+  I *= 0.5 * pi / kPanels;
+  return I / (2.0 * pi * pi * std::sqrt(p.density * p.thickness));
+}
+
+double dropped_compliance_moment(const FinitePlate& p, double omega_cut, double reach) {
+  const double modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
+  const double Omega = reach * omega_cut;
+  double sum = 0.0;  // positive terms: rounding ~ 1e-16 of the sum per term, in any order
+  for_each_excited_mode(p, Omega, [&](int m, int n, double W) {
+    const double om = plate_mode_frequency(p, m, n);
+    if (om > omega_cut) sum += W * W / (om * om * om * om);
+    return true;
+  });
+  return sum / modal_mass + plate_gain_density(p) / (3.0 * Omega * Omega * Omega);
+}
+
+ResidualOscillator residual_oscillator(const PlateModes& modes) {
+  const double C = modes.residual_compliance, D = modes.residual_moment;
+  if (!(C > 0.0 && D > 0.0 && std::isfinite(C) && std::isfinite(D)))
+    throw std::invalid_argument(
+        "residual_oscillator: needs C_res > 0 and D_res > 0 (plate_modes() with "
+        "residual_moment); got C_res " +
+        std::to_string(C) + ", D_res " + std::to_string(D));
+  const double omega2 = C / D;
+  return {std::sqrt(omega2), C * omega2};
 }
 
 PlateModes static_plate_modes(const FinitePlate& p) {

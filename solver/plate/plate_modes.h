@@ -47,12 +47,43 @@
 // Truncation: the modes with omega <= omega_cut are kept; the rest respond quasi-statically
 // (mode acceleration / residual flexibility):
 //   C_res = C_static - sum_kept g_k/omega_k^2                                       [m/N]
-// the compliance the impact model puts in series with the contact spring.
+// the compliance the impact model puts in series with the contact spring. Each dropped mode's
+// response is u_k = g_k F/omega_k^2 - g_k F''/omega_k^4 + ... (for a force slow against omega_k),
+// so the static compliance leaves out the second moment
+//   D_res = sum_dropped g_k/omega_k^4                                               [m s^2/N]
+// and that term sets the error of e: with ~ gamma d omega of gain per d omega (below) D_res ~
+// gamma/(3 omega_cut^3), and e converges as cut-off^-3 (case plate.convergence.with-residual).
+// D_res is summed over the dropped modes up to kMomentReach omega_cut, and beyond that by the
+// gain density: sum_{omega > Omega} g/omega^4 ~ gamma/(3 Omega^3) (a kMomentReach^-3 = 1/512
+// share of D_res; the lattice's scatter about the density is a few per cent of that share).
+//
+// The dropped modes as one equivalent oscillator (DroppedModes::oscillator): a mode of its own,
+// u_e'' = -omega_e^2 u_e + g_e F, whose static compliance and second moment match the dropped
+// modes', g_e/omega_e^2 = C_res and g_e/omega_e^4 = D_res:
+//   omega_e^2 = C_res/D_res,   g_e = C_res omega_e^2                         [rad^2/s^2], [1/kg]
+// (omega_e > omega_cut, since every dropped omega_k is). It is a real mass-spring system, so the
+// energy ledger holds with its energy (u_e'^2 + omega_e^2 u_e^2)/(2 g_e) among the modes', and
+// the first term the static compliance misses, -D_res F'', is carried: the error of e then falls
+// faster than cut-off^-3 (case plate.convergence.with-oscillator). It is the lumped-mass
+// counterpart of the "residual flexibility + residual mass" corrections of component mode
+// synthesis (R. R. Craig and A. J. Kurdila, Fundamentals of Structural Dynamics, 2nd ed., 2006,
+// §15.4: the dropped modes' quasi-static expansion to second order).
+//
+// Gain density: the excited modes below omega number ~ a b omega sqrt(rho h) I/(2 pi^2) (the
+// lattice points (m, n) under omega_mn <= omega: in p = m/a, q = n/b the region r^4 Q(phi) <=
+// rho h omega^2/pi^4, Q = D11 cos^4 + 2 H cos^2 sin^2 + D22 sin^4, of area (omega sqrt(rho h)/
+// (2 pi^2)) I, I = int_0^{pi/2} Q^{-1/2} dphi; R. Courant and D. Hilbert, Methods of
+// Mathematical Physics I, 1953, ch. VI §4, for the leading term), and W(x0, y0)^2 averages 1/4
+// over them (sin^2 averages 1/2 along each index at any interior point), so
+//   gamma = sum_k g_k per unit omega = I/(2 pi^2 sqrt(rho h))                       [1/(kg rad/s)]
+// For an isotropic plate I = pi/(2 sqrt(D)), gamma = 1/(4 pi sqrt(rho h D)), and (pi/2) gamma =
+// 1/(8 sqrt(rho h D)) is the infinite plate's point mobility (the dashpot c = 8 sqrt(rho h D)).
 //
 // Units: SI (m, kg, N m, rad/s, m/N).
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -64,6 +95,16 @@ namespace ivv {
 inline constexpr double kNodalShape = 1e-24;
 // Relative distance |r1 - r2|/|r1| below which the two roots are treated as one (see above).
 inline constexpr double kDoubleRoot = 1e-5;
+
+// D_res is summed mode by mode up to this multiple of omega_cut, by the gain density beyond.
+inline constexpr double kMomentReach = 8.0;
+
+// What the impact model does with the modes above the cut-off (above).
+enum class DroppedModes {
+  truncated,          // nothing (plain truncation; the convergence study)
+  static_compliance,  // C_res in series with the contact spring (mode acceleration)
+  oscillator,         // one equivalent oscillator matching C_res and D_res
+};
 
 struct PlateMode {
   int m = 0, n = 0;    // half-waves along x and y
@@ -94,6 +135,7 @@ struct PlateModeOptions {
   // C_static of this plate when already computed (plate_static_compliance() is then not
   // called again: several cut-offs of one plate share it)
   std::optional<StaticCompliance> static_compliance = std::nullopt;
+  bool residual_moment = false;  // also sum D_res (the equivalent oscillator needs it)
 };
 
 struct PlateModes {
@@ -103,7 +145,26 @@ struct PlateModes {
   StaticCompliance static_compliance;  // C_static
   double kept_compliance = 0.0;        // sum_kept g/omega^2 [m/N]
   double residual_compliance = 0.0;    // C_res = C_static - kept [m/N]
+  // D_res = sum_dropped g/omega^4 [m s^2/N] (options.residual_moment; NaN otherwise)
+  double residual_moment = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The gain density gamma [1/(kg rad/s)] of the header: sum_k g_k per unit omega, on average.
+double plate_gain_density(const FinitePlate& p);
+
+// D_res [m s^2/N] of the modes above omega_cut (header): summed up to kMomentReach omega_cut
+// (`reach` times when given), by the gain density beyond.
+double dropped_compliance_moment(const FinitePlate& p, double omega_cut,
+                                 double reach = kMomentReach);
+
+// The equivalent oscillator of the dropped modes (header).
+struct ResidualOscillator {
+  double omega = 0.0;  // omega_e = sqrt(C_res/D_res) [rad/s]
+  double gain = 0.0;   // g_e = C_res omega_e^2 [1/kg]
+};
+// Throws std::invalid_argument when `modes` has no D_res (plate_modes() not asked for it) or
+// C_res or D_res is not > 0 (no mode dropped, or rounding ate them).
+ResidualOscillator residual_oscillator(const PlateModes& modes);
 
 // The kept modes and the compliances. Throws InputError("structure", ...) when more than
 // max_modes modes lie below omega_cut (the message says how many, and that the infinite

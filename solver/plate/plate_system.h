@@ -23,16 +23,26 @@ class PlateSystem {
   using value_type = double;
   using History = history_t<Law, double>;
 
-  // Modes from plate_modes(); m [kg] the impactor's mass; residual: use C_res or not.
-  PlateSystem(const Law& law, const Scales& k, const PlateModes& modes, double m, bool residual)
+  // Modes from plate_modes(); m [kg] the impactor's mass; `dropped` what the modes above the
+  // cut-off are (plate_modes.h): nothing, C_res in series with the spring, or the equivalent
+  // oscillator, then the last mode of this system (its omega_e is above every kept mode's, so
+  // the order by omega holds) and no C_res.
+  PlateSystem(const Law& law, const Scales& k, const PlateModes& modes, double m,
+              DroppedModes dropped)
       : law_(law), length_(k.length), force_scale_(k.force) {
     const double T = k.time;
-    for (const PlateMode& md : modes.modes) {
-      omega_.push_back(md.omega * T);
-      omega2_.push_back(md.omega * T * md.omega * T);
-      gain_.push_back(md.gain * m);
+    auto add = [&](double omega, double gain) {
+      omega_.push_back(omega * T);
+      omega2_.push_back(omega * T * omega * T);
+      gain_.push_back(gain * m);
+    };
+    for (const PlateMode& md : modes.modes) add(md.omega, md.gain);
+    if (dropped == DroppedModes::oscillator) {
+      const ResidualOscillator e = residual_oscillator(modes);
+      add(e.omega, e.gain);
     }
-    compliance_ = residual ? modes.residual_compliance * m / (T * T) : 0.0;
+    compliance_ =
+        dropped == DroppedModes::static_compliance ? modes.residual_compliance * m / (T * T) : 0.0;
   }
 
   std::size_t modes() const { return omega_.size(); }
