@@ -193,7 +193,7 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     stages_ready_ = false;
   }
 
-  StepResult step(const System& sys) {
+  [[gnu::flatten]] StepResult step(const System& sys) {
     t0_ = t1_;
     x0_ = x1_;
     k_[0] = k_[12];
