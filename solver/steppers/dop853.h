@@ -193,7 +193,11 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     stages_ready_ = false;
   }
 
-  StepResult step(const System& sys) {
+  // Flattened: the step sits at GCC's inlining budget, where the right-hand side was called out
+  // of line from some stages; flattened, all of it is inlined into the step (callgrind, paper
+  // scene at 1e-8: the step 13,951 -> 13,012 instructions per impact, results bit for bit the
+  // same; always_inline on the step instead had cost 12 %).
+  [[gnu::flatten]] StepResult step(const System& sys) {
     t0_ = t1_;
     x0_ = x1_;
     k_[0] = k_[12];
