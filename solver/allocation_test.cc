@@ -9,34 +9,10 @@
 // std::array state allocate nothing).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include "solver/simulate.h"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// The replacements pair std::malloc with std::free. With -fsanitize=address (make asan) GCC
-// inlines them into callers and then warns -Wmismatched-new-delete that a pointer from
-// operator new reaches std::free: a false positive for a replaced operator new built on malloc
-// (three of them broke the warning-free `make asan` build), silenced for these definitions only.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
+// counted_allocations.cc: the global operator new replaced by one that counts
+long heap_allocations_so_far();
 
 namespace ivv {
 namespace {
@@ -49,9 +25,9 @@ long allocations_of_one_impact(IntegratorKind k, double zeta) {
   req.integrator = k;
   const ImpactResult warm = simulate(req);  // first-call statics (tables, error handlers)
   EXPECT_TRUE(warm.separated()) << warm.reason;
-  const long before = g_allocations.load();
+  const long before = heap_allocations_so_far();
   const ImpactResult r = simulate(req);
-  const long n = g_allocations.load() - before;
+  const long n = heap_allocations_so_far() - before;
   EXPECT_TRUE(r.separated()) << r.reason;
   return n;
 }
@@ -80,9 +56,9 @@ TEST(Allocations, DoNotGrowWithTheNumberOfSteps) {
     for (double rtol : {1e-6, 1e-13}) {
       req.options.rtol = req.options.atol = rtol;
       simulate(req);
-      const long before = g_allocations.load();
+      const long before = heap_allocations_so_far();
       const ImpactResult r = simulate(req);
-      EXPECT_EQ(g_allocations.load() - before, kPerImpact)
+      EXPECT_EQ(heap_allocations_so_far() - before, kPerImpact)
           << to_string(k) << " rtol " << rtol << ", " << r.steps << " steps";
     }
   }
@@ -99,10 +75,10 @@ TEST(Allocations, RodasOnTheStiffSceneAllocatesOnlyTheEventLists) {
   for (double rtol : {1e-6, 1e-10}) {
     req.options.rtol = req.options.atol = rtol;
     simulate(req);
-    const long before = g_allocations.load();
+    const long before = heap_allocations_so_far();
     const ImpactResult r = simulate(req);
     EXPECT_EQ(r.status, ImpactStatus::captured) << r.reason;
-    EXPECT_EQ(g_allocations.load() - before, kPerImpact)
+    EXPECT_EQ(heap_allocations_so_far() - before, kPerImpact)
         << "rtol " << rtol << ", " << r.steps << " steps";
   }
 }

@@ -9,33 +9,12 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <filesystem>
-#include <new>
 
 #include "solver/sweep/sweep.h"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// As in solver/allocation_test.cc: the replacements pair std::malloc with std::free (the
-// -Wmismatched-new-delete warning under ASan is a false positive for them).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
+// counted_allocations.cc: the global operator new replaced by one that counts
+long heap_allocations_so_far();
 
 namespace ivv {
 namespace {
@@ -61,9 +40,9 @@ long allocations_of_rows(std::size_t batch, std::size_t warm) {
     SweepSink sink(req, {csv, false, "test"});
     const SweepInputColumns inputs(req);
     SweepRowBatch rows;
-    long before = g_allocations.load();
+    long before = heap_allocations_so_far();
     for (std::size_t first = 0, b = 0; first < sink.total(); first += batch, ++b) {
-      if (b == warm) before = g_allocations.load();
+      if (b == warm) before = heap_allocations_so_far();
       for (std::size_t i = first; i < first + batch && i < sink.total(); ++i) {
         std::string& text = rows.begin_row(i);
         const std::size_t start = text.size();
@@ -72,7 +51,7 @@ long allocations_of_rows(std::size_t batch, std::size_t warm) {
       }
       sink.deliver(rows);
     }
-    allocations = g_allocations.load() - before;
+    allocations = heap_allocations_so_far() - before;
     EXPECT_TRUE(sink.finish({}));
   }
   fs::remove(csv);
