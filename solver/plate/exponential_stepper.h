@@ -82,6 +82,7 @@
 #include <string_view>
 #include <vector>
 
+#include "solver/plate/mode_phases.h"
 #include "solver/steppers/step_result.h"
 
 namespace ivv {
@@ -233,6 +234,13 @@ class PlateExponentialStepper {
       modes_.moments.push_back(next);
     }
     modes_.compliance = sys.compliance();
+    std::vector<std::array<int, 2>> lattice;  // none: every phase by sin and cos
+    SeparableFrequency split;
+    if constexpr (requires { sys.separable(); }) {
+      for (std::size_t k = 0; k < sys.modes(); ++k) lattice.push_back(sys.lattice(k));
+      split = sys.separable();
+    }
+    phases_ = ModePhases(modes_.omega, lattice, split);
     rungs_.clear();
   }
   const Rung& rung(int j);
@@ -256,6 +264,8 @@ class PlateExponentialStepper {
   int fixed_rung_ = -1;  // >= 0: fix_step()
   bool grow_ok_ = true;
   Modes modes_;
+  ModePhases phases_;                          // cos, sin of omega_k t for all k (mode_phases.h)
+  mutable std::vector<double> cos_t_, sin_t_;  // scratch of gap_at and interpolate
   std::map<int, Rung> rungs_;
   double t0_ = 0.0, t1_ = 0.0, h_ = 0.0;
   state_type x0_, x1_, trial_;
@@ -298,10 +308,10 @@ auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
   };
   rows(s0, -1.0, r.h, r.alpha_end, r.alpha_rate_end);
   std::array<double, P + 2> sum{};  // sum_k g_k s_n(omega_k h)
+  phases_.at(r.h, r.cos_h, r.sin_h);
+  phases_.at(r.h / kProbes, r.cos_q, r.sin_q);
   for (std::size_t k = 0; k < N; ++k) {
     const double x = modes_.omega[k] * r.h;
-    r.cos_h[k] = std::cos(x), r.sin_h[k] = std::sin(x);
-    r.cos_q[k] = std::cos(x / kProbes), r.sin_q[k] = std::sin(x / kProbes);
     duhamel_weights<P>(x, r.cos_h[k], r.sin_h[k], s);
     for (int n = 0; n < P + 2; ++n) r.end_w[k][n] = modes_.gain[k] * s[n], sum[n] += r.end_w[k][n];
   }
@@ -600,8 +610,9 @@ std::array<double, 2> PlateExponentialStepper<System, P>::gap_at(double theta) c
   duhamel_weights<P>(0.0, 1.0, 0.0, s);
   const auto fa = forced_at(theta, s);
   double w = 0.0, wr = 0.0;
+  phases_.at(t, cos_t_, sin_t_);
   for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
-    const double om = modes_.omega[k], x = om * t, c = std::cos(x), sn = std::sin(x);
+    const double om = modes_.omega[k], x = om * t, c = cos_t_[k], sn = sin_t_[k];
     const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
     duhamel_weights<P>(x, c, sn, s);
     const auto f = forced_at(theta, s);
@@ -639,8 +650,9 @@ void PlateExponentialStepper<System, P>::interpolate(const System&, double t,
   const auto fa = forced_at(theta, s);
   out[0] = x0_[0] + x0_[1] * tt - fa[0];
   out[1] = x0_[1] - fa[1];
+  phases_.at(tt, cos_t_, sin_t_);
   for (std::size_t k = 0; k < modes_.omega.size(); ++k) {
-    const double om = modes_.omega[k], x = om * tt, c = std::cos(x), sn = std::sin(x);
+    const double om = modes_.omega[k], x = om * tt, c = cos_t_[k], sn = sin_t_[k];
     const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
     duhamel_weights<P>(x, c, sn, s);
     const auto f = forced_at(theta, s);
