@@ -123,6 +123,15 @@ double plate_mode_frequency(const FinitePlate& p, int m, int n) {
   return pi * pi * std::sqrt(k / (p.density * p.thickness));
 }
 
+SeparableFrequency separable_frequency(const FinitePlate& p) {
+  const OrthotropicBending& d = p.bending;
+  const double H = d.D12 + 2.0 * d.D66, D = d.D11 * d.D22;
+  if (!(D > 0.0) || !(std::abs(H * H - D) <= 1e-12 * D)) return {};
+  const double rho_h = p.density * p.thickness;
+  return {pi * pi * std::sqrt(d.D11 / rho_h) / (p.length_x * p.length_x),
+          pi * pi * std::sqrt(d.D22 / rho_h) / (p.length_y * p.length_y)};
+}
+
 StaticCompliance plate_static_compliance(const FinitePlate& p,
                                          const StaticComplianceOptions& options) {
   const double a = p.length_x, b = p.length_y;
@@ -201,6 +210,7 @@ PlateModes plate_modes(const FinitePlate& p, const PlateModeOptions& options) {
   PlateModes out;
   out.omega_cut = options.omega_cut;
   out.modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
+  out.separable = separable_frequency(p);
   for_each_excited_mode(p, options.omega_cut, [&](int m, int n, double W) {
     if (out.modes.size() == options.max_modes) return false;  // one too many: counted below
     out.modes.push_back({m, n, plate_mode_frequency(p, m, n), W, W * W / out.modal_mass});

@@ -89,6 +89,7 @@
 #include <vector>
 
 #include "scene/structure.h"
+#include "solver/plate/mode_phases.h"
 
 namespace ivv {
 
@@ -116,6 +117,9 @@ struct PlateMode {
 
 // omega_mn [rad/s] of the formula above.
 double plate_mode_frequency(const FinitePlate& p, int m, int n);
+// omega_mn as along_x m^2 + along_y n^2 [rad/s] when D11 D22 = H^2 to 1e-12 relative (the
+// frequency formula's square root then separates: mode_phases.h), else both 0.
+SeparableFrequency separable_frequency(const FinitePlate& p);
 
 struct StaticCompliance {
   double value = 0.0;       // C_static [m/N]
@@ -148,6 +152,9 @@ struct PlateModes {
   double residual_compliance = 0.0;    // C_res = C_static - kept [m/N]
   // D_res = sum_dropped g/omega^4 [m s^2/N] (options.residual_moment; NaN otherwise)
   double residual_moment = std::numeric_limits<double>::quiet_NaN();
+  // omega_mn = along_x m^2 + along_y n^2 when the frequency separates (D11 D22 = H^2, every
+  // isotropic plate: mode_phases.h), else both 0
+  SeparableFrequency separable;
 };
 
 // The gain density gamma [1/(kg rad/s)] of the header: sum_k g_k per unit omega, on average.

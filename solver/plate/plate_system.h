@@ -31,16 +31,18 @@ class PlateSystem {
               DroppedModes dropped)
       : law_(law), length_(k.length), force_scale_(k.force) {
     const double T = k.time;
-    auto add = [&](double omega, double gain) {
+    auto add = [&](double omega, double gain, std::array<int, 2> mn) {
       omega_.push_back(omega * T);
       omega2_.push_back(omega * T * omega * T);
       gain_.push_back(gain * m);
+      lattice_.push_back(mn);
     };
-    for (const PlateMode& md : modes.modes) add(md.omega, md.gain);
+    for (const PlateMode& md : modes.modes) add(md.omega, md.gain, {md.m, md.n});
     if (dropped == DroppedModes::oscillator) {
       const ResidualOscillator e = residual_oscillator(modes);
-      add(e.omega, e.gain);
+      add(e.omega, e.gain, {0, 0});  // off the lattice
     }
+    separable_ = {modes.separable.along_x * T, modes.separable.along_y * T};
     compliance_ =
         dropped == DroppedModes::static_compliance ? modes.residual_compliance * m / (T * T) : 0.0;
   }
@@ -49,7 +51,11 @@ class PlateSystem {
   std::size_t size() const { return 2 + 2 * omega_.size(); }
   double omega(std::size_t k) const { return omega_[k]; }
   double gain(std::size_t k) const { return gain_[k]; }
-  double compliance() const { return compliance_; }    // C_res, normalised
+  double compliance() const { return compliance_; }  // C_res, normalised
+  // {m, n} of mode k ({0, 0}: the equivalent oscillator) and the split of omega_mn, normalised
+  // (mode_phases.h)
+  std::array<int, 2> lattice(std::size_t k) const { return lattice_[k]; }
+  SeparableFrequency separable() const { return separable_; }
   double length() const { return length_; }            // L [m]
   double force_scale() const { return force_scale_; }  // [N]
 
@@ -138,6 +144,8 @@ class PlateSystem {
   Law law_;
   double length_, force_scale_;
   std::vector<double> omega_, omega2_, gain_;
+  std::vector<std::array<int, 2>> lattice_;
+  SeparableFrequency separable_;
   double compliance_ = 0.0;
   mutable std::string failure_;
   mutable long evaluations_ = 0;
