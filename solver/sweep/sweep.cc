@@ -40,11 +40,14 @@ ImpactResult simulate_plate_point(const SimulationRequest& point) {
   return as_sweep_result(simulate_plate_law(point, opt));
 }
 
-// `inputs()` gives the point's PointInputs, for the message of a point that throws.
+// Point `index` run with `point` (req.base, or a point of the same grid before) made its request
+// (assign_point_request); `inputs()` gives the point's PointInputs, for the message of a point
+// that throws.
 template <class Inputs>
-ImpactResult simulate_point(const SweepRequest& req, std::size_t index, const Inputs& inputs) {
+ImpactResult simulate_point(const SweepRequest& req, std::size_t index, SimulationRequest& point,
+                            const Inputs& inputs) {
   try {
-    const SimulationRequest point = point_request(req, index);
+    assign_point_request(req, index, point);
     if (has_finite_plate(point.scene)) return simulate_plate_point(point);
     return simulate(ValidatedRequest::grid_point(req, point));
   } catch (const std::exception& e) {
@@ -56,15 +59,18 @@ ImpactResult simulate_point(const SweepRequest& req, std::size_t index, const In
 
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
   const PointInputs in = point_inputs(req, index);
-  return sweep_csv_row(in, simulate_point(req, index, [&] { return in; }));
+  SimulationRequest point = req.base;
+  return sweep_csv_row(in, simulate_point(req, index, point, [&] { return in; }));
 }
 
 namespace {
-// Runs point `index` into the worker's batch: the inputs copied from their text, the results
-// formatted into the batch's buffer (no allocation once it has grown).
+// Runs point `index` into the worker's batch: the request made in the worker's `point`, the
+// inputs copied from their text, the results formatted into the batch's buffer (no allocation
+// once it has grown).
 void run_sweep_point(const SweepRequest& req, const SweepInputColumns& inputs, std::size_t index,
-                     SweepRowBatch& rows) {
-  const ImpactResult result = simulate_point(req, index, [&] { return point_inputs(req, index); });
+                     SimulationRequest& point, SweepRowBatch& rows) {
+  const ImpactResult result =
+      simulate_point(req, index, point, [&] { return point_inputs(req, index); });
   std::string& text = rows.begin_row(index);
   const std::size_t start = text.size();
   inputs.append(text, index);
@@ -82,7 +88,8 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   try {
     parallel_for(points.size(), opt, [&](std::size_t i) {
       PointInputs in = point_inputs(req, i);
-      points[i].result = simulate_point(req, i, [&] { return in; });
+      SimulationRequest point = req.base;
+      points[i].result = simulate_point(req, i, point, [&] { return in; });
       points[i].v0 = in.v0;
       points[i].zeta = in.zeta;
       points[i].axes = std::move(in.axes);
@@ -109,6 +116,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
   try {
     parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t) {
       SweepRowBatch rows;
+      SimulationRequest point = req.base;  // each point's request made in it
       std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
       for (;;) {
         if (opt.stop && *opt.stop) {  // a batch taken but not run is left for --resume
@@ -118,7 +126,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         // take() and deliver_and_take() block until work is available or none is left
         if (batch.empty()) return;
         try {
-          for (const std::size_t i : batch) run_sweep_point(req, inputs, i, rows);
+          for (const std::size_t i : batch) run_sweep_point(req, inputs, i, point, rows);
         } catch (...) {
           sink.request_stop();  // the other workers take no more: the sweep ends
           sink.deliver(rows);   // the points done before it stay in the journal

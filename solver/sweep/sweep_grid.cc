@@ -183,6 +183,19 @@ SimulationRequest point_request(const SweepRequest& req, std::size_t index) {
   return r;
 }
 
+void assign_point_request(const SweepRequest& req, std::size_t index, SimulationRequest& r) {
+  if (!req.axes.empty()) {
+    r = point_request(req, index);
+    return;
+  }
+  const GridPosition at = grid_position(req, index);
+  r.scene.velocity = req.velocities[at.velocity];
+  if (!req.scene_dashpot) {
+    const double zeta = req.zetas[at.zeta];
+    r.scene.damping = zeta > 0 ? Damping::ratio(zeta) : Damping::none();
+  }
+}
+
 PointInputs point_inputs(const SweepRequest& req, std::size_t index) {
   const GridPosition at = grid_position(req, index);
   PointInputs p{req.velocities[at.velocity], 0.0, axis_values(req, at.axes)};
