@@ -1,6 +1,7 @@
 #include "solver/parallel.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -76,6 +77,16 @@ void parallel_for(std::size_t n, const ParallelOptions& options,
   worker();
   for (auto& t : pool) t.join();
   if (error) throw ParallelError(error_index, error, error_what);
+}
+
+std::optional<ThreadSchedule> thread_schedule() {
+  std::FILE* f = std::fopen("/proc/thread-self/schedstat", "r");
+  if (!f) return std::nullopt;
+  unsigned long long running = 0, waiting = 0;  // [ns]
+  const int read = std::fscanf(f, "%llu %llu", &running, &waiting);
+  std::fclose(f);
+  if (read != 2) return std::nullopt;
+  return ThreadSchedule{1e-9 * static_cast<double>(running), 1e-9 * static_cast<double>(waiting)};
 }
 
 }  // namespace ivv

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -53,6 +54,17 @@ int worker_count(std::size_t n, int threads);
 
 void parallel_for(std::size_t n, const ParallelOptions& options,
                   const std::function<void(std::size_t)>& fn);
+
+// The calling thread's time so far as the kernel's scheduler counted it (Linux:
+// /proc/thread-self/schedstat, nanoseconds): on a core, and runnable but waiting for one. What is
+// left of its wall time the thread was blocked (a lock, a condition variable, I/O) or not yet
+// started. Waiting for a core is the machine's doing (other processes on the cores); being
+// blocked is the program's. nullopt where the kernel does not say (not Linux, no schedstat).
+struct ThreadSchedule {
+  double running = 0.0;  // [s]
+  double waiting = 0.0;  // [s]
+};
+std::optional<ThreadSchedule> thread_schedule();
 
 inline void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& fn) {
   parallel_for(n, ParallelOptions{threads, {}, nullptr}, fn);

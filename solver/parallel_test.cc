@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -127,6 +128,25 @@ TEST(ParallelFor, EmptyRangeCallsNothing) {
   EXPECT_EQ(worker_count(0, 4), 1);
   EXPECT_EQ(worker_count(3, 8), 3);
   EXPECT_EQ(worker_count(100, 2), 2);
+}
+
+// A thread that spins for 50 ms of wall time is on a core or waiting for one all along: the
+// kernel's two counts add up to the spin (less 5 ms: the two readings of /proc are taken
+// microseconds apart, and the scheduler's clock is in nanoseconds), and it ran for some of it.
+TEST(ThreadSchedule, CountsTheWallTimeOfABusyThreadAsRunningOrWaiting) {
+  const std::optional<ThreadSchedule> before = thread_schedule();
+  if (!before) GTEST_SKIP() << "the kernel gives no scheduler statistics (schedstat)";
+  const auto start = std::chrono::steady_clock::now();
+  volatile unsigned long spins = 0;
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(50))
+    spins = spins + 1;
+  const std::optional<ThreadSchedule> after = thread_schedule();
+  ASSERT_TRUE(after);
+  const double running = after->running - before->running;
+  const double waiting = after->waiting - before->waiting;
+  EXPECT_GT(running, 0.0);
+  EXPECT_GE(waiting, 0.0);
+  EXPECT_GE(running + waiting, 0.045);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "solver/sweep/sweep.h"
 
+#include <chrono>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -28,6 +30,38 @@ std::string point_label(const SweepRequest& req, std::size_t index, const PointI
   }
   return label + ")";
 }
+
+// Times one worker of run_sweep_points into its SweepWorkerTime (none when `slot` is null):
+// from construction to destruction, whichever way the worker ends.
+class WorkerClock {
+ public:
+  using Clock = std::chrono::steady_clock;
+  WorkerClock(SweepWorkerTime* slot, Clock::time_point origin)
+      : slot_(slot), origin_(origin), start_(Clock::now()), schedule_(thread_schedule()) {}
+  WorkerClock(const WorkerClock&) = delete;
+  WorkerClock& operator=(const WorkerClock&) = delete;
+  ~WorkerClock() {
+    if (!slot_) return;
+    const std::optional<ThreadSchedule> now = thread_schedule();
+    slot_->start = seconds(start_);
+    slot_->end = seconds(Clock::now());
+    if (now && schedule_) {
+      slot_->running = now->running - schedule_->running;
+      slot_->waiting = now->waiting - schedule_->waiting;
+    }
+    slot_->points = points_;
+  }
+  void add_points(std::size_t n) { points_ += n; }
+
+ private:
+  double seconds(Clock::time_point t) const {
+    return std::chrono::duration<double>(t - origin_).count();
+  }
+  SweepWorkerTime* slot_;
+  Clock::time_point origin_, start_;
+  std::optional<ThreadSchedule> schedule_;
+  std::size_t points_ = 0;
+};
 
 // A finite plate's point: the full plate with the sweep's tolerances (solver/plate/plate_impact.h).
 ImpactResult simulate_plate_point(const SimulationRequest& point) {
@@ -113,8 +147,11 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
   const SweepInputColumns inputs(req);
   ParallelOptions po;
   po.threads = worker_count(sink.total(), req.threads);
+  const WorkerClock::Clock::time_point origin = WorkerClock::Clock::now();
+  if (opt.workers) opt.workers->assign(static_cast<std::size_t>(po.threads), {});
   try {
-    parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t) {
+    parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t worker) {
+      WorkerClock clock(opt.workers ? &(*opt.workers)[worker] : nullptr, origin);
       SweepRowBatch rows;
       SimulationRequest point = req.base;  // each point's request made in it
       std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
@@ -133,6 +170,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
           throw;
         }
         const std::size_t delivered = rows.size();
+        clock.add_points(delivered);
         batch = sink.deliver_and_take(rows, opt.batch);
         if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);

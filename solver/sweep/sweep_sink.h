@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <functional>
 #include <istream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -219,6 +220,18 @@ class SweepSink {
   std::vector<char> journal_buffer_, partial_buffer_;  // their stdio buffers (setvbuf)
 };
 
+// One worker of run_sweep_points, timed (SweepRunOptions::workers): what tells a sweep that
+// leaves its threads idle (a lock, the end of the grid) from a machine that does not give them
+// a core (ivv bench's two-thread map).
+struct SweepWorkerTime {
+  double start = 0.0, end = 0.0;  // [s] from the sweep's start: the worker's first, last instant
+  // [s] between the two, on a core and waiting for one (solver/parallel.h, thread_schedule);
+  // NaN where the kernel does not say. end - start - running - waiting: blocked.
+  double running = std::numeric_limits<double>::quiet_NaN();
+  double waiting = std::numeric_limits<double>::quiet_NaN();
+  std::size_t points = 0;  // the points it computed
+};
+
 struct SweepRunOptions {
   const std::atomic<bool>* stop = nullptr;  // set by a signal handler: stop handing out work
   // Called once for every point delivered (a batch at a time), serialised.
@@ -227,6 +240,8 @@ struct SweepRunOptions {
   // 32 points are about 0.4 ms of the paper scene's work; a SIGKILL loses at most a batch a
   // worker, computed again on --resume.
   std::size_t batch = 32;
+  // Not null: one entry a worker, filled as each ends.
+  std::vector<SweepWorkerTime>* workers = nullptr;
 };
 
 // Runs every point not yet done on request.threads workers (parallel_for, one worker an index),

@@ -171,6 +171,33 @@ TEST(SweepSink, StreamedCsvEqualsTheInMemoryRows) {
   EXPECT_EQ(run_to_csv(req, scratch("stream.csv"), false), expected);
 }
 
+// Each worker of a two-thread sweep says how many points it computed (together, the grid) and
+// when it began and ended; on a core and waiting for one fit inside its span (1 ms: the kernel's
+// counts and the steady clock are read microseconds apart).
+TEST(SweepSink, EachWorkerStatesItsPointsAndWhereItsTimeWent) {
+  SweepRequest req = paper_grid(8, 5);
+  req.threads = 2;
+  SweepSink sink(req, {scratch("workers.csv"), false, "test"});
+  std::vector<SweepWorkerTime> workers;
+  SweepRunOptions opt;
+  opt.workers = &workers;
+  opt.batch = 4;
+  run_sweep_points(req, sink, opt);
+  EXPECT_TRUE(sink.finish({}));
+  ASSERT_EQ(workers.size(), 2u);
+  std::size_t points = 0;
+  for (const SweepWorkerTime& w : workers) {
+    points += w.points;
+    EXPECT_LE(0.0, w.start);
+    EXPECT_LE(w.start, w.end);
+    if (std::isnan(w.running)) continue;  // no scheduler statistics from this kernel
+    EXPECT_GE(w.running, 0.0);
+    EXPECT_GE(w.waiting, 0.0);
+    EXPECT_LE(w.running + w.waiting, w.end - w.start + 1e-3);
+  }
+  EXPECT_EQ(points, sink.total());
+}
+
 TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
   SweepRequest req = paper_grid(5, 3);
   req.threads = 2;
