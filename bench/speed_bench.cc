@@ -22,6 +22,7 @@
 
 #include "bench/arithmetic_limit.h"
 #include "closed_forms/linear_model.h"
+#include "solver/choice/model_choice.h"
 #include "solver/format.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/sweep/sweep.h"
@@ -440,6 +441,47 @@ std::string worker_text(const MapRun& one, const MapRun& two) {
          " s on one (" + fmt(100.0 * (running / one.workers[0].running - 1.0), 3) + " %)";
 }
 
+// Integrated points of one kind (captured or rebound): how many, and their steps and RHS
+// evaluations.
+struct KindTally {
+  double points = 0.0, steps = 0.0, evals = 0.0;
+  void add(const ImpactResult& r) {
+    points += 1.0;
+    steps += static_cast<double>(r.steps);
+    evals += static_cast<double>(r.rhs_evaluations);
+  }
+  std::string text() const {
+    if (!(points > 0)) return "none";
+    return fmt(points, 6) + " points, " + fmt(steps / points, 3) + " steps and " +
+           fmt(evals / points, 3) + " RHS evaluations a point";
+  }
+};
+
+// Instructions a point inside simulate() for each kind of integrated point, on rectangles of the
+// map's range where every point is of that kind (the 300 x 300 map's rows say which): captured at
+// v0 5-10 m/s, zeta 0.8-1; rebound at v0 0.1-10 m/s, zeta 0.05-0.3. The kinds' own costs, not the
+// map's mix of them (its steps by kind are in the target's description).
+std::string instructions_by_kind(const std::string& ivv, const std::string& common) {
+  const InstructionCount captured =
+      count_instructions({.ivv = ivv,
+                          .args = "--v0 5:10:10 --log --zeta 0.8:1:6" + common,
+                          .points = 60,
+                          .single = {},
+                          .simulate_only = true});
+  const InstructionCount rebound =
+      count_instructions({.ivv = ivv,
+                          .args = "--v0 0.1:10:10 --log --zeta 0.05:0.3:6" + common,
+                          .points = 60,
+                          .single = {},
+                          .simulate_only = true});
+  auto figure = [](const InstructionCount& c) {
+    return std::isnan(c.per_impact) ? c.how : fmt(c.per_impact, 5);
+  };
+  return "by kind, inside simulate() (callgrind --toggle-collect): captured " + figure(captured) +
+         " a point (v0 5-10 m/s log x zeta 0.8-1, 10 x 6, all captured), rebound " +
+         figure(rebound) + " a point (v0 0.1-10 m/s log x zeta 0.05-0.3, 10 x 6, all separated)";
+}
+
 // The large map: 300 x 300 (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
 // --integrator auto) with its CSV, on one and on two threads; --quick: a 60 x 30 subgrid
 // scaled to 90000 points.
@@ -449,8 +491,15 @@ void describe_map(BenchTarget& t, const SweepRequest& sweep, double scale, const
   SweepRequest r = sweep;
   r.threads = 1;
   double evals = 0.0;
-  for (const SweepPoint& p : run_sweep(r)) evals += static_cast<double>(p.result.rhs_evaluations);
+  KindTally captured, rebound;
+  for (const SweepPoint& p : run_sweep(r)) {
+    evals += static_cast<double>(p.result.rhs_evaluations);
+    if (p.result.route != to_string(ModelRoute::integrated)) continue;
+    (p.result.status == ImpactStatus::captured ? captured : rebound).add(p.result);
+  }
   set_limit(t, evals * scale, in.rhs_ns, 1e-6, "every point of the map (closed-form points none)");
+  t.how +=
+      "; integrated points by kind: captured " + captured.text() + ", rebound " + rebound.text();
   if (in.ivv.empty()) return;
   const std::string common =
       " --scene paper --law elastoplastic --model auto --integrator auto --rtol 1e-8 --atol 1e-8 "
@@ -460,6 +509,7 @@ void describe_map(BenchTarget& t, const SweepRequest& sweep, double scale, const
                                           .points = 60 * 30,
                                           .single = "--v0 1 --zeta 0.1" + common,
                                           .simulate_only = false}));
+  t.instructions_how += "; " + instructions_by_kind(in.ivv, common);
 }
 
 // The control of the two-thread target, which measures the machine rather than the sweep: the
