@@ -135,12 +135,17 @@ void write_sixteen_digits(char* d, std::uint64_t n) {
 }
 
 // printf's "%.{p}g" of a rounded value: trailing zeros dropped, scientific when E < -4 or
-// E >= p (exponent of at least two digits).
+// E >= p (exponent of at least two digits). The digits are copied sixteen bytes at a time
+// whatever their count (the library's copy of a few bytes was a call to memmove a run): `out` has
+// room for kMaxNumberChars (32), and the widest case, fixed with E = p - 2 = 13, ends its last
+// copy at out + 32; the characters past the number are left as they fall.
 char* write_rounded(char* out, bool negative, const Rounded& r, int p) {
-  static_assert(kMaxFastPrecision <= 16, "the digits are written sixteen at a time");
-  char sixteen[16];
-  write_sixteen_digits(sixteen, r.digits);
-  const char* d = sixteen + 16 - p;
+  static_assert(kMaxFastPrecision <= 15 && kMaxNumberChars >= 32,
+                "sixteen-byte copies of at most 15 digits stay inside the caller's 32 characters");
+  char digits[32];  // the sixteen digits, then '0's: a copy of 16 from any of the first p is inside
+  write_sixteen_digits(digits, r.digits);
+  std::memset(digits + 16, '0', 16);
+  const char* d = digits + 16 - p;
   int k = p;
   while (k > 1 && d[k - 1] == '0') --k;
   const int E = r.exponent;
@@ -149,7 +154,8 @@ char* write_rounded(char* out, bool negative, const Rounded& r, int p) {
     *out++ = d[0];
     if (k > 1) {
       *out++ = '.';
-      out = std::copy(d + 1, d + k, out);
+      std::memcpy(out, d + 1, 16);
+      out += k - 1;
     }
     *out++ = 'e';
     *out++ = E < 0 ? '-' : '+';
@@ -161,16 +167,18 @@ char* write_rounded(char* out, bool negative, const Rounded& r, int p) {
     std::memcpy(out, kDigitPairs + 2 * m, 2);
     return out + 2;
   }
-  if (E >= 0) {
-    if (k <= E + 1) return std::fill_n(std::copy(d, d + k, out), E + 1 - k, '0');
-    out = std::copy(d, d + E + 1, out);
+  if (E >= 0) {  // d[k..p) are '0': the integer part is the first E + 1 digits as they stand
+    std::memcpy(out, d, 16);
+    out += E + 1;
+    if (k <= E + 1) return out;
     *out++ = '.';
-    return std::copy(d + E + 1, d + k, out);
+    std::memcpy(out, d + E + 1, 16);
+    return out + (k - E - 1);
   }
-  *out++ = '0';
-  *out++ = '.';
-  out = std::fill_n(out, -E - 1, '0');
-  return std::copy(d, d + k, out);
+  std::memcpy(out, "0.000", 5);  // "0." and the -E - 1 <= 3 zeros after the point
+  out += 2 - E - 1;
+  std::memcpy(out, d, 16);
+  return out + k;
 }
 
 }  // namespace
