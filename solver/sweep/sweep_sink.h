@@ -21,6 +21,7 @@
 #include <istream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -217,7 +218,7 @@ class SweepSink {
   std::optional<SweepCounts::Tally::iterator> last_route_, last_integrator_;
   std::FILE* journal_ = nullptr;
   std::FILE* partial_ = nullptr;
-  std::vector<char> journal_buffer_, partial_buffer_;  // their stdio buffers (setvbuf)
+  std::unique_ptr<char[]> journal_buffer_, partial_buffer_;  // their stdio buffers (setvbuf)
 };
 
 // One worker of run_sweep_points, timed (SweepRunOptions::workers): what tells a sweep that
