@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "scene/input_error.h"
+#include "scene/scene_json.h"
 #include "solver/plate/plate_impact.h"
 #include "solver/request_options.h"
 
@@ -42,6 +43,34 @@ std::string field_of(const SweepRequest& req) {
     return e.field();
   }
   return "";
+}
+
+// A worker's one request, made point after point in any order (zeta 0 after a dashpot, a
+// velocity row revisited), is the request point_request() copies from the base: the same scene
+// in every input, the same law, integrator and options. With the scene's own dashpot, and with
+// scene axes (where the base is copied).
+TEST(SweepGrid, AssignedPointRequestIsThePointRequest) {
+  SweepRequest plain = paper_grid(3, 4);  // zetas 0, 1/3, 2/3, 1
+  plain.base.options.rtol = 1e-7;
+  SweepRequest own = paper_grid(3, 1);
+  own.base.scene.damping = Damping::ratio(0.2);
+  own.zetas.clear();
+  own.scene_dashpot = true;
+  SweepRequest axes = paper_grid(2, 2);
+  axes.axes = {{"impactor.mass", {0.1, 0.5, 2.0}}};
+  for (const SweepRequest* req : {&plain, &own, &axes}) {
+    SimulationRequest made = req->base;
+    const std::size_t n = point_count(*req);
+    for (std::size_t k = 0; k < 2 * n; ++k) {
+      const std::size_t index = (k * 7 + 3) % n;  // every point, out of order, twice
+      assign_point_request(*req, index, made);
+      const SimulationRequest copied = point_request(*req, index);
+      EXPECT_EQ(scene_json(made.scene).dump(), scene_json(copied.scene).dump()) << index;
+      EXPECT_EQ(made.law, copied.law);
+      EXPECT_EQ(made.integrator, copied.integrator);
+      EXPECT_EQ(made.options.rtol, copied.options.rtol);
+    }
+  }
 }
 
 TEST(SweepValidate, HuntCrossleyWithADashpotIsBadInputNamingZeta) {
