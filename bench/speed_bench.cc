@@ -817,19 +817,28 @@ void add_cor_map_targets(const BenchOptions& options, BenchReport& rep) {
   // The 200 x 50 COR map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8) through
   // run_sweep, the sweep's own parallel loop: --model auto with --integrator auto on one and
   // on two threads, and the full model (dop853) on one thread for the "auto is never slower"
-  // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts. Each timing is the
-  // median of three runs (the machines are noisy); all three maps come from this one run.
+  // comparison. --quick times a 40 x 10 subgrid and scales to 10000 impacts, except for the
+  // two-thread ratio, which is timed on the whole 200 x 50 map (~0.1 s a run): the subgrid's
+  // 400 impacts take a few milliseconds, as long as a second thread can take to start on a
+  // loaded machine (1.5-7 ms measured here), so its ratio said more of that than of the sweep.
+  // Each timing is the median of three runs (the machines are noisy); all the maps come from
+  // this one run.
+  auto grid_of = [](int nv, int nz) {
+    SweepRequest sweep;
+    sweep.base.scene = paper_scene();
+    sweep.base.law = LawKind::elastoplastic;
+    sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
+    for (int i = 0; i < nv; ++i)
+      sweep.velocities.push_back(0.1 * std::pow(100.0, i / double(nv - 1)));
+    for (int j = 0; j < nz; ++j) sweep.zetas.push_back(j / double(nz - 1));
+    return sweep;
+  };
   const int nv = options.quick ? 40 : 200, nz = options.quick ? 10 : 50;
-  SweepRequest sweep;
-  sweep.base.scene = paper_scene();
-  sweep.base.law = LawKind::elastoplastic;
-  sweep.base.options.rtol = sweep.base.options.atol = 1e-8;
-  for (int i = 0; i < nv; ++i)
-    sweep.velocities.push_back(0.1 * std::pow(100.0, i / double(nv - 1)));
-  for (int j = 0; j < nz; ++j) sweep.zetas.push_back(j / double(nz - 1));
+  const SweepRequest sweep = grid_of(nv, nz), whole = grid_of(200, 50);
   const double scale = (200.0 * 50.0) / (nv * nz);
-  auto time_map = [&](ModelKind model, bool auto_integrator, int threads, int* failed) {
-    SweepRequest r = sweep;
+  auto time_grid = [](const SweepRequest& grid, ModelKind model, bool auto_integrator, int threads,
+                      int* failed) {
+    SweepRequest r = grid;
     r.base.model = model;
     r.base.auto_integrator = auto_integrator;
     r.base.integrator = IntegratorKind::dop853;
@@ -843,12 +852,14 @@ void add_cor_map_targets(const BenchOptions& options, BenchReport& rep) {
                                                [](const SweepPoint& p) { return !p.result.ok(); }));
     }
     std::sort(runs.begin(), runs.end());
-    return runs[1] * scale;
+    return runs[1];
   };
-  int failed_auto = 0, failed_two = 0, failed_full = 0;
-  const double t_auto = time_map(ModelKind::automatic, true, 1, &failed_auto);
-  const double t_two = time_map(ModelKind::automatic, true, 2, &failed_two);
-  const double t_full = time_map(ModelKind::full, false, 1, &failed_full);
+  int failed_auto = 0, failed_two = 0, failed_full = 0, failed_whole = 0;
+  const double t_auto = time_grid(sweep, ModelKind::automatic, true, 1, &failed_auto) * scale;
+  const double t_full = time_grid(sweep, ModelKind::full, false, 1, &failed_full) * scale;
+  const double t_whole =
+      options.quick ? time_grid(whole, ModelKind::automatic, true, 1, &failed_whole) : t_auto;
+  const double t_two = time_grid(whole, ModelKind::automatic, true, 2, &failed_two);
   const std::string grid = options.quick ? "40 x 10 subgrid scaled to 10000 impacts; " : "";
   rep.targets.push_back(target(
       "200 x 50 COR map at rtol 1e-8, --model auto, one thread", 0.1, "s", t_auto,
@@ -856,10 +867,11 @@ void add_cor_map_targets(const BenchOptions& options, BenchReport& rep) {
           " failed points (a failed point counts as a miss: the target asks for every point)",
       "map"));
   if (failed_auto > 0) rep.targets.back().met = false;
-  rep.targets.push_back(target(
-      "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", t_two / t_auto,
-      grid + "two-thread time / one-thread time (" + std::to_string(failed_two) + " failed points)",
-      "map"));
+  rep.targets.push_back(target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio",
+                               t_two / t_whole,
+                               "the whole 200 x 50 map; two-thread time / one-thread time (" +
+                                   std::to_string(failed_two + failed_whole) + " failed points)",
+                               "map"));
   rep.targets.push_back(target("--model auto never more than 10% slower than the full model", 1.10,
                                "ratio", t_auto / t_full,
                                grid + "auto / full (elastoplastic, dop853) on the same map, one "
