@@ -35,8 +35,9 @@
 // series of cos and sin, into one polynomial in theta (free_motion_of_slow_modes: ~2 flops per
 // mode and term, at most kFreeTerms terms, where turning each mode's phase at the Q probes was
 // ~9 flops per mode and probe); faster modes are turned at the probes as before. Callgrind, the
-// ball with the oscillator at cut-off 20, rtol 1e-5, one impact: the stepper's free motion 3.79M
-// -> 1.2M instructions.
+// ball with the oscillator at cut-off 20, rtol 1e-5, one impact (42 steps): the stepper's free
+// motion 3.79M -> 1.25M instructions, the whole impact 12.9M -> 6.6M with the rest of this
+// file's pairs and tables and plate_modes.cc's D_res.
 //
 // Error control: the embedded solution is the degree-(P-1) polynomial through nodes 0 .. P-1 of
 // the same converged F; it differs from the full one by d_P = F_P - (its extrapolation to node
@@ -90,6 +91,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <map>
 #include <string>
 #include <string_view>
@@ -100,30 +102,35 @@
 
 namespace ivv {
 
+// Two doubles in one SSE2 register (the GCC and Clang vector extension): the per-mode loops work
+// on {u_k, u_k'} (the state's own layout) or on two terms at a time, since without -ffast-math
+// the compiler does not reorder a sum into lanes itself.
+using DoublePair = double __attribute__((vector_size(16)));
+
 // Below this omega h the weights s_n come from their series (header).
 inline constexpr double kSeriesBelow = 4.0;
 
 // The series of duhamel_weights below kSeriesBelow, tabulated so that a term costs a
-// multiplication (a division a term was most of a weight's cost): ratio[r][k] = 1/(a (a + 1)),
+// multiplication (a division a term was most of a weight's cost): ratio[k][r] = 1/(a (a + 1)),
 // a = n + 3 + 2 k, the ratio of term k + 1 to term k over -x^2 for n = P - 1 + r; first[r] =
 // 1/((n + 1)(n + 2)), the first term.
 inline constexpr int kDuhamelSeriesTerms = 60;
 template <int P>
 struct DuhamelSeries {
-  std::array<std::array<double, kDuhamelSeriesTerms>, 2> ratio{};
+  std::array<DoublePair, kDuhamelSeriesTerms> ratio{};
   std::array<double, 2> first{};
 };
 template <int P>
 constexpr DuhamelSeries<P> duhamel_series() {
   DuhamelSeries<P> t;
-  for (int r = 0; r < 2; ++r) {
-    const int n = P - 1 + r;
-    t.first[static_cast<std::size_t>(r)] = 1.0 / ((n + 1.0) * (n + 2.0));
-    for (int k = 0; k < kDuhamelSeriesTerms; ++k) {
-      const double a = n + 3.0 + 2.0 * k;
-      t.ratio[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] = 1.0 / (a * (a + 1.0));
-    }
-  }
+  auto ratio = [](int n, int k) {
+    const double a = n + 3.0 + 2.0 * k;
+    return 1.0 / (a * (a + 1.0));
+  };
+  for (int r = 0; r < 2; ++r)
+    t.first[static_cast<std::size_t>(r)] = 1.0 / ((P + r) * (P + r + 1.0));  // n = P - 1 + r
+  for (int k = 0; k < kDuhamelSeriesTerms; ++k)
+    t.ratio[static_cast<std::size_t>(k)] = DoublePair{ratio(P - 1, k), ratio(P, k)};
   return t;
 }
 
@@ -134,15 +141,14 @@ void duhamel_weights(double x, double c, double sn, std::array<double, P + 2>& s
   static constexpr DuhamelSeries<P> kSeries = duhamel_series<P>();
   const double x2 = x * x;
   if (x < kSeriesBelow) {  // s_P, s_(P-1) by their series, then down: stable for x^2 < n(n-1)
-    for (int r = 0; r < 2; ++r) {
-      const auto& ratio = kSeries.ratio[static_cast<std::size_t>(r)];
-      double term = kSeries.first[static_cast<std::size_t>(r)], sum = term;
-      for (int k = 0; k < kDuhamelSeriesTerms && std::abs(term) > 1e-18 * std::abs(sum); ++k) {
-        term *= -x2 * ratio[static_cast<std::size_t>(k)];
-        sum += term;
-      }
-      s[static_cast<std::size_t>(P + r)] = sum;
+    // both series at once, {s_(P-1), s_P} in one pair: the first has the larger term ratio and
+    // the larger first term, so its sum is the last to converge
+    DoublePair term = {kSeries.first[0], kSeries.first[1]}, sum = term;
+    for (int k = 0; k < kDuhamelSeriesTerms && std::abs(term[0]) > 1e-18 * std::abs(sum[0]); ++k) {
+      term *= -x2 * kSeries.ratio[static_cast<std::size_t>(k)];
+      sum += term;
     }
+    s[P] = sum[0], s[P + 1] = sum[1];
     // divided, not multiplied by a tabulated reciprocal: that extra rounding put s_(-1)(3.999)
     // 2.8e-16 off its 50-digit value, past the test's 2.5e-16 there
     for (int n = P; n >= 2; --n)
@@ -273,6 +279,16 @@ class PlateExponentialStepper {
     return f;
   }
   static constexpr std::array<double, 2 * kFreeTerms> kInverseFactorial = inverse_factorials();
+  // kFreeReach[J]: the largest x for which J terms are enough, x^(2J-1)/(2J-1)! <=
+  // kFreeTruncation (the first term of the rate's series left out, relative to omega |u|; the
+  // deflection's is smaller by x/(2J)); kFreeTerms are enough below kSeriesBelow
+  inline static const std::array<double, kFreeTerms + 1> kFreeReach = [] {
+    std::array<double, kFreeTerms + 1> reach{};
+    for (int J = 1; J <= kFreeTerms; ++J)
+      reach[static_cast<std::size_t>(J)] =
+          std::pow(std::tgamma(2.0 * J) * kFreeTruncation, 1.0 / (2.0 * J - 1.0));
+    return reach;
+  }();
   struct Modes {
     std::vector<double> omega, inv_omega, gain;  // by increasing omega (plate_modes.h)
     std::vector<Moments> moments;                // moments[K]: over the modes k < K
@@ -288,7 +304,10 @@ class PlateExponentialStepper {
     // the modes k < terms_end[J] need at most J of them (terms_end[kFreeTerms] = slow)
     std::array<std::size_t, kFreeTerms + 1> terms_end{};
     std::vector<double> cos_h, sin_h, cos_q, sin_q;  // per mode: omega h, omega h/Q
-    std::vector<std::array<double, P + 2>> end_w;    // per mode: g_k s_n(omega_k h), n = -1 .. P
+    // per mode: what u and u' contribute to {u, u'} at the step's end, {cos, -omega sin} and
+    // {sin/omega, cos} of omega h
+    std::vector<DoublePair> turn_u, turn_v;
+    std::vector<std::array<double, P + 2>> end_w;  // per mode: g_k s_n(omega_k h), n = -1 .. P
     std::array<Row, kProbes + 1> probe_z{}, probe_rate{};  // forced z_kin, rate at t = q h/Q
     Row alpha_end{}, alpha_rate_end{}, w_end{}, w_rate_end{};
   };
@@ -380,19 +399,19 @@ auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
   r.slow = static_cast<std::size_t>(
       std::lower_bound(modes_.omega.begin(), modes_.omega.end(), kSeriesBelow / r.h) -
       modes_.omega.begin());
-  // the slow modes' free series: terms until x^(2J-1)/(2J-1)! (the first term of the rate's
-  // series left out, relative to omega |u|; the deflection's is smaller by x/(2J)) is below
-  // kFreeTruncation, at most kFreeTerms (enough for x < kSeriesBelow); the modes by increasing x
-  for (std::size_t k = 0; k < r.slow; ++k) {
-    const double x = modes_.omega[k] * r.h;
-    int J = 1;
-    for (double term = x; J < kFreeTerms && term > kFreeTruncation; ++J)
-      term *= x * x / ((2.0 * J) * (2.0 * J + 1.0));
-    for (int j = r.free_terms; j < J; ++j) r.terms_end[static_cast<std::size_t>(j)] = k;
-    r.free_terms = std::max(r.free_terms, J);
-  }
-  for (int j = r.free_terms; j <= kFreeTerms; ++j)
-    r.terms_end[static_cast<std::size_t>(j)] = r.slow;
+  // the slow modes' free series: the modes k < terms_end[J] have x = omega_k h <= kFreeReach[J],
+  // so that J terms are enough for them
+  for (int J = 1; J <= kFreeTerms; ++J)
+    r.terms_end[static_cast<std::size_t>(J)] =
+        J == kFreeTerms
+            ? r.slow
+            : std::min(r.slow, static_cast<std::size_t>(std::upper_bound(modes_.omega.begin(),
+                                                                         modes_.omega.end(),
+                                                                         kFreeReach[J] / r.h) -
+                                                        modes_.omega.begin()));
+  r.free_terms = kFreeTerms;  // the fewest that every slow mode can do with
+  while (r.free_terms > 1 && r.terms_end[static_cast<std::size_t>(r.free_terms - 1)] == r.slow)
+    --r.free_terms;
   const std::size_t N = modes_.omega.size();
   r.cos_h.resize(N), r.sin_h.resize(N), r.cos_q.resize(N), r.sin_q.resize(N);
   r.end_w.resize(N);
@@ -412,7 +431,12 @@ auto PlateExponentialStepper<System, P>::rung(int j) -> const Rung& {
   rows(s0, -1.0, r.h, r.alpha_end, r.alpha_rate_end);
   std::array<double, P + 2> sum{};  // sum_k g_k s_n(omega_k h)
   phases_.at(r.h, r.cos_h, r.sin_h);
-  phases_.at(r.h / kProbes, r.cos_q, r.sin_q);
+  phases_.at(r.h / kProbes, r.cos_q, r.sin_q, r.slow);  // the probes turn the faster modes only
+  r.turn_u.resize(N), r.turn_v.resize(N);
+  for (std::size_t k = 0; k < N; ++k) {
+    r.turn_u[k] = DoublePair{r.cos_h[k], -modes_.omega[k] * r.sin_h[k]};
+    r.turn_v[k] = DoublePair{modes_.inv_omega[k] * r.sin_h[k], r.cos_h[k]};
+  }
   for (std::size_t k = 0; k < N; ++k) {
     const double x = modes_.omega[k] * r.h;
     duhamel_weights<P>(x, r.cos_h[k], r.sin_h[k], s);
@@ -525,7 +549,7 @@ void PlateExponentialStepper<System, P>::free_motion(const Rung& r) {
 // 9 a mode and a probe. Returns sum_k |u_k| over these modes (z_kin's rounding scale).
 template <class System, int P>
 double PlateExponentialStepper<System, P>::free_motion_of_slow_modes(const Rung& r) {
-  using Pair = double __attribute__((vector_size(16)));  // {A_j, B_j}: two lanes of SSE2
+  using Pair = DoublePair;  // {A_j, B_j}
   std::array<Pair, kFreeTerms> moments{};
   double mag = 0.0;
   for (std::size_t k = 0; k < r.slow; ++k) mag += std::abs(x0_[2 + 2 * k]);
@@ -699,13 +723,23 @@ void PlateExponentialStepper<System, P>::advance(const Rung& r) {
   for (int n = 1; n <= P; ++n) cv[n] = n * coeff_[n];
   for (int n = 0; n <= P; ++n) cv[n] *= r.h;
   trial_.resize(x0_.size());
+  // per mode, in SSE2 pairs: {u, u'} turned by the rung's {cos, -omega sin}, {sin/omega, cos},
+  // plus the forced part {h^2 sum cu w, h sum cv w} summed two weights at a time
+  std::array<DoublePair, (P + 2) / 2> cu2, cv2;
+  for (int i = 0; i < (P + 2) / 2; ++i)
+    cu2[i] = DoublePair{cu[2 * i], cu[2 * i + 1]}, cv2[i] = DoublePair{cv[2 * i], cv[2 * i + 1]};
   for (std::size_t k = 0; k < N; ++k) {
-    const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k], om = modes_.omega[k];
-    const auto& w = r.end_w[k];
-    double fu = 0.0, fv = 0.0;
-    for (int n = 0; n < P + 2; ++n) fu += cu[n] * w[n], fv += cv[n] * w[n];
-    trial_[2 + 2 * k] = u * r.cos_h[k] + v * modes_.inv_omega[k] * r.sin_h[k] + fu;
-    trial_[3 + 2 * k] = -u * om * r.sin_h[k] + v * r.cos_h[k] + fv;
+    const double u = x0_[2 + 2 * k], v = x0_[3 + 2 * k];
+    const double* w = r.end_w[k].data();
+    DoublePair au{}, av{};
+    for (int i = 0; i < (P + 2) / 2; ++i) {
+      DoublePair wp;
+      std::memcpy(&wp, w + 2 * i, sizeof wp);
+      au += cu2[i] * wp, av += cv2[i] * wp;
+    }
+    const DoublePair f = DoublePair{au[0], av[0]} + DoublePair{au[1], av[1]};
+    const DoublePair next = u * r.turn_u[k] + v * r.turn_v[k] + f;
+    std::memcpy(&trial_[2 + 2 * k], &next, sizeof next);
   }
   double fa = 0.0, fva = 0.0;
   for (int i = 0; i <= P; ++i) fa += r.alpha_end[i] * F_[i], fva += r.alpha_rate_end[i] * F_[i];
