@@ -70,7 +70,7 @@ class PlateImpactDriver {
   PlateImpactDriver(const Law& law, const Scales& k, const PlateModes& modes, double m,
                     const PlateImpactOptions& opt)
       : law_(law),
-        sys_(law, k, modes, m, opt.dropped),
+        sys_(law, k, modes, m, opt.dropped.value_or(DroppedModes::static_compliance)),
         scales_(k),
         opt_(opt),
         stepper_(make_plate_stepper<Stepper>(opt)) {}
