@@ -237,14 +237,16 @@ struct EarliestCrossing {
 // bracketing subinterval is solved (solve_crossing), for the roots that cross in it. With
 // `solve` false a crossing is placed at t1 (detection at step ends, for demonstrations).
 // `g0`, when given, holds the roots' values at x0 (the previous step's g1 for the same roots
-// at the same state: a step's start is the last one's end), which are then not recomputed.
+// at the same state: a step's start is the last one's end), which are then not recomputed;
+// `g1` likewise at x1 (the caller has them from the stepper's derivative there).
 // Throws EventLocationError as solve_crossing does.
 template <std::size_t Capacity, class T, class State, class Interpolate, class Root>
 EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, const T& t1,
                                               const State& x1, Interpolate&& interpolate,
                                               const RootSet<Capacity>& set, Root&& g,
                                               const LocatorOptions& opt, bool solve,
-                                              const std::array<T, Capacity>* g0 = nullptr) {
+                                              const std::array<T, Capacity>* g0 = nullptr,
+                                              const std::array<T, Capacity>* g1 = nullptr) {
   bool probe = false;
   for (int i = 0; i < set.size; ++i) probe = probe || !set.roots[i].monotone;
   const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
@@ -256,6 +258,10 @@ EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, cons
     const State* xk = &s;
     if (k == 0 && g0) {
       gp[0] = *g0;
+      continue;
+    }
+    if (k == n && g1) {
+      gp[n] = *g1;
       continue;
     }
     if (k == 0)
