@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include "app/cli_run.h"
 
 #include <array>
@@ -568,6 +569,38 @@ TEST(Cli, FinitePlateSimulateReportsContactsAndModes) {
   const CliRun bad = ivv("simulate --scene drop-weight-coupon --zeta 0.1");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--zeta"), std::string::npos) << bad.err;
+}
+
+// [structure] dropped_modes reaches `simulate`: its JSON names it in the truncation block (the
+// static compliance when the scene says nothing); a name it does not know is bad input (exit 2)
+// naming the field and the accepted names.
+TEST(Cli, FinitePlateDroppedModesFromTheScene) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("ivv_dropped_" + std::to_string(getpid()) + ".toml");
+  auto write = [&](const std::string& dropped) {
+    std::ofstream out(file);
+    out << "[impactor]\nmass = 0.004168\nradius = 0.005\nyoungs_modulus = 207e9\n"
+           "poisson_ratio = 0.3\n[target]\nyoungs_modulus = 207e9\npoisson_ratio = 0.3\n"
+           "[structure]\nkind = \"plate\"\nthickness = 0.001\ndensity = 7960\n"
+           "length_x = 0.05\nlength_y = 0.04\nedges = \"simply-supported\"\n"
+        << dropped << "[impact]\nvelocity = 1.0\n";
+  };
+  write("dropped_modes = \"oscillator\"\n");
+  const CliRun osc = ivv("simulate --scene " + file.string() + " --law hertz --json");
+  ASSERT_EQ(osc.exit_code, 0) << osc.err;
+  EXPECT_EQ(nlohmann::json::parse(osc.out)["truncation"]["dropped_modes"], "oscillator");
+  write("");
+  const CliRun plain = ivv("simulate --scene " + file.string() + " --law hertz --json");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["truncation"]["dropped_modes"], "static-compliance");
+  write("dropped_modes = \"modal\"\n");
+  const CliRun bad = ivv("simulate --scene " + file.string() + " --law hertz --json");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(bad.out.empty()) << bad.out;
+  for (const char* word :
+       {"structure.dropped_modes", "static-compliance", "oscillator", "truncated"})
+    EXPECT_NE(bad.err.find(word), std::string::npos) << word << ": " << bad.err;
+  std::filesystem::remove(file);
 }
 
 // --integrator on a finite plate names its stepper (the exponential one by default), and the JSON

@@ -256,9 +256,13 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
         {"estimated_error_e", finite_or_null(run.truncation_error)},
         {"tolerance", run.options.truncation_tol},
         {"runs", run.result.cutoff_runs},
+        // the modes above the cut-off ([structure] dropped_modes): "static-compliance",
+        // "oscillator" or "truncated"
+        {"dropped_modes", std::string(dropped_modes_name(run.result.dropped))},
         {"rule",
-         "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as the "
-         "static compliance C_res in series; error of e estimated from two cut-offs c' < c as "
+         "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as "
+         "dropped_modes says (by default the static compliance C_res in series; the oscillator "
+         "also matches their second moment); error of e estimated from two cut-offs c' < c as "
          "1.25 |e(c) - e(c')|/((c/c')^3 - 1) (observed order 3 in the cut-off, Roache's safety "
          "factor 1.25); the cut-off raised from 40 until that estimate is within the "
          "tolerance"}}},

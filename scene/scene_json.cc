@@ -74,6 +74,12 @@ void finite_plate_from_json(const json& j, const std::string& prefix, Structure&
     if (!edges) throw InputError(prefix + "edges", "must be \"simply-supported\"");
     st.edges = *edges;
   }
+  if (j.contains("dropped_modes") && !j.at("dropped_modes").is_null()) {
+    const auto dropped = dropped_modes_from_name(text(j, "dropped_modes", prefix));
+    if (!dropped)
+      throw InputError(prefix + "dropped_modes", std::string("accepted: ") + kDroppedModesNames);
+    st.dropped_modes = *dropped;
+  }
   if (j.contains("orthotropic_bending") && !j.at("orthotropic_bending").is_null()) {
     const json& d = j.at("orthotropic_bending");
     const std::string in = prefix + "orthotropic_bending.";
@@ -168,7 +174,8 @@ json scene_json(const Scene& s) {
 json structure_json(const Scene& s) {
   if (s.damping.kind != Damping::Kind::structure) return nullptr;
   const auto& [kind, density, thickness, area, bending_stiffness, youngs_modulus, poisson_ratio,
-               length_x, length_y, edges, impact_x, impact_y, bending] = s.damping.structure;
+               length_x, length_y, edges, impact_x, impact_y, bending, dropped_modes] =
+      s.damping.structure;
   const Structure& st = s.damping.structure;
   const StructureDashpot d = structure_dashpot(st, s.target_youngs_modulus, s.target_poisson_ratio);
   return {
@@ -195,6 +202,9 @@ json structure_json(const Scene& s) {
                                              {"D12", bending->D12},
                                              {"D66", bending->D66}}
                                       : json(nullptr)},
+      // what the impact does with the modes above the cut-off (null: the static compliance)
+      {"dropped_modes",
+       dropped_modes ? json(std::string(dropped_modes_name(*dropped_modes))) : json(nullptr)},
   };
 }
 

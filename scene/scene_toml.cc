@@ -119,8 +119,9 @@ void parse_damping(const toml::table& d, Scene& s) {
   if (lambda) s.damping = Damping::zener(*lambda);
 }
 
-// The finite plate's keys of [structure] (scene/structure.h): the lengths, edges, impact point
-// and the four bending stiffnesses (all four or none). Ranges are checked by validate_structure.
+// The finite plate's keys of [structure] (scene/structure.h): the lengths, edges, impact point,
+// the four bending stiffnesses (all four or none) and what the impact does with the modes above
+// its cut-off (dropped_modes). Ranges are checked by validate_structure.
 void parse_finite_plate(const toml::table& t, Structure& st) {
   st.length_x = number(t, "structure", "length_x");
   st.length_y = number(t, "structure", "length_y");
@@ -133,6 +134,12 @@ void parse_finite_plate(const toml::table& t, Structure& st) {
                        "\"clamped\" is not modelled yet; accepted: \"simply-supported\"");
     st.edges = name ? plate_edges_from_name(*name) : std::nullopt;
     if (!st.edges) throw InputError("structure.edges", "accepted: \"simply-supported\"");
+  }
+  if (const toml::node* dm = t.get("dropped_modes")) {
+    const auto name = dm->value<std::string>();
+    st.dropped_modes = name ? dropped_modes_from_name(*name) : std::nullopt;
+    if (!st.dropped_modes)
+      throw InputError("structure.dropped_modes", std::string("accepted: ") + kDroppedModesNames);
   }
   const std::array<const char*, 4> names = {"D11", "D22", "D12", "D66"};
   std::array<std::optional<double>, 4> d;
@@ -163,7 +170,7 @@ Structure parse_structure(const toml::table& t) {
   std::set<std::string> keys = {"kind", "density", "youngs_modulus"};
   if (*kind != Structure::Kind::bar)
     keys.insert({"thickness", "bending_stiffness", "poisson_ratio", "length_x", "length_y", "edges",
-                 "impact_x", "impact_y", "D11", "D22", "D12", "D66"});
+                 "impact_x", "impact_y", "D11", "D22", "D12", "D66", "dropped_modes"});
   if (*kind != Structure::Kind::plate) keys.insert("area");
   for (const char* length : {"length_x", "length_y"})
     if (*kind == Structure::Kind::bar && t.contains(length))
@@ -174,8 +181,9 @@ Structure parse_structure(const toml::table& t) {
     const std::string k(key.str());
     if (keys.count(k)) continue;
     static const std::set<std::string> known = {
-        "thickness", "bending_stiffness", "poisson_ratio", "area", "length_x", "length_y", "edges",
-        "impact_x",  "impact_y",          "D11",           "D22",  "D12",      "D66"};
+        "thickness", "bending_stiffness", "poisson_ratio", "area", "length_x", "length_y",
+        "edges",     "impact_x",          "impact_y",      "D11",  "D22",      "D12",
+        "D66",       "dropped_modes"};
     if (!known.count(k)) reject_unknown_keys(t, "structure", keys);
     throw InputError("structure." + k, "not used by kind = \"" + *kind_name +
                                            "\"; accepted keys for it: " + join(keys));

@@ -39,6 +39,25 @@ std::string_view plate_edges_name(PlateEdges edges) {
   return "?";
 }
 
+std::string_view dropped_modes_name(DroppedModes dropped) {
+  switch (dropped) {
+    case DroppedModes::static_compliance:
+      return "static-compliance";
+    case DroppedModes::oscillator:
+      return "oscillator";
+    case DroppedModes::truncated:
+      return "truncated";
+  }
+  return "?";
+}
+
+std::optional<DroppedModes> dropped_modes_from_name(std::string_view name) {
+  for (DroppedModes d :
+       {DroppedModes::static_compliance, DroppedModes::oscillator, DroppedModes::truncated})
+    if (name == dropped_modes_name(d)) return d;
+  return std::nullopt;
+}
+
 double olsson_bending_stiffness(const OrthotropicBending& d) {
   const double root = std::sqrt(d.D11 * d.D22);
   const double A = (d.D12 + 2.0 * d.D66) / root;
@@ -145,6 +164,7 @@ void validate_finite_plate(const Structure& s) {
     if (s.edges) throw InputError("structure.edges", needs);
     if (s.impact_x) throw InputError("structure.impact_x", needs);
     if (s.impact_y) throw InputError("structure.impact_y", needs);
+    if (s.dropped_modes) throw InputError("structure.dropped_modes", needs);
     return;
   }
   if (s.kind != Structure::Kind::plate)

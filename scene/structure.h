@@ -56,6 +56,17 @@ struct OrthotropicBending {
 // The edge conditions of a finite plate: only simply supported (Navier modes) is modelled.
 enum class PlateEdges { simply_supported };
 
+// What a finite plate's impact does with the modes above its cut-off (solver/plate/plate_modes.h):
+// their static compliance C_res in series with the spring (mode acceleration, the default), one
+// equivalent oscillator matching C_res and their second moment D_res (e converges as cut-off^-4
+// on the 5 mm ball, where the static compliance converges as cut-off^-3), or nothing (plain
+// truncation, for convergence studies).
+enum class DroppedModes {
+  truncated,          // nothing
+  static_compliance,  // C_res in series with the contact spring
+  oscillator,         // one equivalent oscillator matching C_res and D_res
+};
+
 // The struck structure of a scene ([structure] in a scene file).
 struct Structure {
   enum class Kind { plate, bar, plate_and_bar };
@@ -73,6 +84,7 @@ struct Structure {
   std::optional<double> impact_x;             // x0 [m], absent: a/2
   std::optional<double> impact_y;             // y0 [m], absent: b/2
   std::optional<OrthotropicBending> bending;  // D11..D66 [N m]; absent: isotropic
+  std::optional<DroppedModes> dropped_modes;  // absent: the static compliance (finite plate only)
 
   bool has_plate() const { return kind != Kind::bar; }
   bool finite_plate() const { return length_x.has_value() || length_y.has_value(); }
@@ -97,6 +109,13 @@ struct StructureDashpot {
 // "simply-supported" (the scene file's spelling); nullopt for any other name.
 std::optional<PlateEdges> plate_edges_from_name(std::string_view name);
 std::string_view plate_edges_name(PlateEdges edges);
+// "static-compliance", "oscillator", "truncated" (the scene file's spelling); nullopt for any
+// other name.
+std::optional<DroppedModes> dropped_modes_from_name(std::string_view name);
+std::string_view dropped_modes_name(DroppedModes dropped);
+// The accepted names, quoted and joined for a message.
+inline constexpr const char* kDroppedModesNames =
+    "\"static-compliance\" (the default), \"oscillator\", \"truncated\"";
 
 // The facts of a valid finite plate (validate_structure first): a x b x h, rho, the impact
 // point and the four bending stiffnesses (isotropic ones from E, nu when not given).

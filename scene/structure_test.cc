@@ -8,6 +8,7 @@
 
 #include "scene/input_error.h"
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 namespace ivv {
 namespace {
@@ -232,6 +233,33 @@ TEST(FinitePlate, OrthotropicStiffnessesAndOlssonsDStar) {
   EXPECT_NEAR(olsson_bending_stiffness({100, 100, 30, 35}), 100.0, 100 * kRounding);
 }
 
+// dropped_modes says what a finite plate's impact does with the modes above its cut-off: absent
+// (the static compliance, as before the key), or one of its three names, kept through the
+// scene's JSON form.
+TEST(FinitePlate, DroppedModesKeyNamesWhatTheImpactDoesAboveTheCutoff) {
+  EXPECT_FALSE(
+      parse_scene_toml(plate_scene(kFiniteKeys), "p.toml").damping.structure.dropped_modes);
+  for (DroppedModes d :
+       {DroppedModes::static_compliance, DroppedModes::oscillator, DroppedModes::truncated}) {
+    const std::string name(dropped_modes_name(d));
+    const Scene s = parse_scene_toml(
+        plate_scene(std::string(kFiniteKeys) + "dropped_modes = \"" + name + "\"\n"), "d.toml");
+    EXPECT_EQ(s.damping.structure.dropped_modes, d) << name;
+    EXPECT_EQ(dropped_modes_from_name(name), d);
+    const Scene back = scene_from_json(nlohmann::json::parse(scene_json(s).dump()), "scene.");
+    EXPECT_EQ(back.damping.structure.dropped_modes, d) << name;
+  }
+  EXPECT_FALSE(dropped_modes_from_name("static"));
+  try {
+    parse_scene_toml(plate_scene(std::string(kFiniteKeys) + "dropped_modes = \"modal\"\n"),
+                     "bad.toml");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {  // the message lists what is accepted
+    for (const char* name : {"static-compliance", "oscillator", "truncated"})
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+  }
+}
+
 struct BadPlate {
   const char* label;
   std::string extra;
@@ -265,6 +293,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadPlate{"free_edges", "length_x = 0.2\nlength_y = 0.2\nedges = \"free\"\n",
                  "structure.edges"},
         BadPlate{"edges_without_lengths", kEdges, "structure.edges"},
+        BadPlate{"dropped_modes_unknown",
+                 std::string(kFiniteKeys) + "dropped_modes = \"residual\"\n",
+                 "structure.dropped_modes"},
+        BadPlate{"dropped_modes_not_text", std::string(kFiniteKeys) + "dropped_modes = 1\n",
+                 "structure.dropped_modes"},
+        BadPlate{"dropped_modes_without_lengths", "dropped_modes = \"oscillator\"\n",
+                 "structure.dropped_modes"},
         BadPlate{"impact_without_lengths", "impact_x = 0.1\n", "structure.impact_x"},
         BadPlate{"impact_outside", std::string(kFiniteKeys) + "impact_x = 0.25\n",
                  "structure.impact_x"},

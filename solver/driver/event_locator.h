@@ -32,6 +32,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace ivv {
 
@@ -56,14 +57,42 @@ struct LocatorOptions {
   std::uintmax_t max_iterations = 200;
 };
 
+// The precision solve_crossing resolves a bracket to, made once: `tolerance` is
+// boost::math::tools::eps_tolerance<T>(bits)'s test (|a - b| <= eps min(|a|, |b|), eps =
+// max(2^(1 - bits) in float, 4 epsilon)), `nudge` half the relative width max(2^(1 - bits),
+// 4 epsilon) in T (anderson_bjorck). Both widths are powers of two: for a binary T at the
+// default bits (all but 3 digits) they are 8 epsilon and 4 epsilon, without ldexp.
+template <class T>
+struct CrossingTolerance {
+  T eps;    // accepted relative width of the final bracket
+  T nudge;  // the least relative distance of a secant point from a bracket's end
+
+  static CrossingTolerance make(int bits) {
+    using std::ldexp;
+    constexpr int digits = std::numeric_limits<T>::digits;
+    const T four_eps = 4 * std::numeric_limits<T>::epsilon();
+    if constexpr (std::numeric_limits<T>::radix == 2 && std::is_floating_point_v<T>) {
+      if (bits == digits - 3) return {T(2) * four_eps, four_eps};  // 2^(4 - digits), halved
+    }
+    const T width = std::max(T(ldexp(T(1), 1 - bits)), four_eps);
+    return {std::max(T(ldexp(1.0F, 1 - bits)), four_eps), T(width / 2)};
+  }
+  bool operator()(const T& a, const T& b) const {
+    using std::abs;
+    using std::min;
+    return abs(a - b) <= eps * min(abs(a), abs(b));
+  }
+};
+
 // Anderson-Bjorck regula falsi on a bracket [a, b] with g(a), g(b) of opposite signs: the
 // secant through the ends, the end that stays having its value scaled by 1 - g(c)/g(new end)
 // (1/2 when that is not positive), so that neither end sticks (Anderson & Bjorck, BIT 13:253,
 // 1973). Superlinear on a smooth root at one g and a few flops a step, where TOMS 748's
 // cubic and quadratic steps cost more than the g of an interpolant (profiled, TOMS 748's own
-// arithmetic was ~10 % of a sweep's instructions). A secant point closer than `nudge` times
-// min(|a|, |b|) to an end is moved to that distance (half the relative width `tol` accepts, as
-// Brent's method steps at least its tolerance): once the secant has the root to that
+// arithmetic was ~10 % of a sweep's instructions). The bracket has a < b. A secant point closer
+// than tol.nudge times min(|a|, |b|) to an end is moved to that distance (half the relative
+// width tol accepts, as Brent's method steps at least its tolerance): once the secant has the
+// root to that
 // precision, the next g lands on the root's other side and closes the bracket to the tolerance
 // at once, where the secant alone creeps up on the root from the end it keeps (measured on the
 // paper scene at 1e-8, with the g at the final bracket's end solve_crossing no longer takes:
@@ -71,14 +100,16 @@ struct LocatorOptions {
 // (post-event in solve_crossing's use). The final bracket, or nullopt when g was not a number
 // somewhere or `limit` steps did not resolve it: the caller then solves the bracket by TOMS 748
 // as before.
-template <class T, class G, class Tol>
-std::optional<std::pair<T, T>> anderson_bjorck(G& g, T a, T b, T fa, T fb, Tol tol, T nudge,
+template <class T, class G>
+std::optional<std::pair<T, T>> anderson_bjorck(G& g, T a, T b, T fa, T fb,
+                                               const CrossingTolerance<T>& tol,
                                                std::uintmax_t limit) {
   for (std::uintmax_t k = 0; k < limit; ++k) {
-    if (tol(a, b)) return std::pair<T, T>{a, b};
+    // min(|a|, |b|) once for the tolerance and the nudge, a < b throughout
+    const T near = a > 0 ? a : b < 0 ? T(-b) : T(-a) < b ? T(-a) : b;
+    if (b - a <= tol.eps * near) return std::pair<T, T>{a, b};  // tol(a, b)
     T c = (a * fb - b * fa) / (fb - fa);
-    const T abs_a = a < 0 ? T(-a) : a, abs_b = b < 0 ? T(-b) : b;
-    const T step = nudge * (abs_a < abs_b ? abs_a : abs_b);
+    const T step = tol.nudge * near;
     if (c - a < step)
       c = a + step;
     else if (b - c < step)
@@ -115,13 +146,9 @@ T solve_crossing(G&& g, const T& a, const T& b, const T& ga, const T& gb, Direct
   if (gb == 0) return b;
   const int digits = std::numeric_limits<T>::digits;
   const int bits = opt.bits > 0 ? opt.bits : digits - 3;
-  boost::math::tools::eps_tolerance<T> tol(bits);
-  // eps_tolerance's relative width (its constructor's formula), half of it for the nudge
-  using std::ldexp;
-  const T width = std::max(T(ldexp(T(1), 1 - bits)), T(4 * std::numeric_limits<T>::epsilon()));
+  const CrossingTolerance<T> tol = CrossingTolerance<T>::make(bits);
   // post-event: g(b) keeps its sign in anderson_bjorck, and is not evaluated again
-  if (const auto ab = anderson_bjorck(g, a, b, ga, gb, tol, T(width / 2), opt.max_iterations))
-    return ab->second;
+  if (const auto ab = anderson_bjorck(g, a, b, ga, gb, tol, opt.max_iterations)) return ab->second;
   std::uintmax_t iterations = opt.max_iterations;
   const std::pair<T, T> bracket =
       boost::math::tools::toms748_solve(g, a, b, ga, gb, tol, iterations);
@@ -210,14 +237,16 @@ struct EarliestCrossing {
 // bracketing subinterval is solved (solve_crossing), for the roots that cross in it. With
 // `solve` false a crossing is placed at t1 (detection at step ends, for demonstrations).
 // `g0`, when given, holds the roots' values at x0 (the previous step's g1 for the same roots
-// at the same state: a step's start is the last one's end), which are then not recomputed.
+// at the same state: a step's start is the last one's end), which are then not recomputed;
+// `g1` likewise at x1 (the caller has them from the stepper's derivative there).
 // Throws EventLocationError as solve_crossing does.
 template <std::size_t Capacity, class T, class State, class Interpolate, class Root>
 EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, const T& t1,
                                               const State& x1, Interpolate&& interpolate,
                                               const RootSet<Capacity>& set, Root&& g,
                                               const LocatorOptions& opt, bool solve,
-                                              const std::array<T, Capacity>* g0 = nullptr) {
+                                              const std::array<T, Capacity>* g0 = nullptr,
+                                              const std::array<T, Capacity>* g1 = nullptr) {
   bool probe = false;
   for (int i = 0; i < set.size; ++i) probe = probe || !set.roots[i].monotone;
   const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
@@ -229,6 +258,10 @@ EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, cons
     const State* xk = &s;
     if (k == 0 && g0) {
       gp[0] = *g0;
+      continue;
+    }
+    if (k == n && g1) {
+      gp[n] = *g1;
       continue;
     }
     if (k == 0)

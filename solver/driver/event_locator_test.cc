@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace ivv {
@@ -51,6 +53,25 @@ TEST(EventLocator, ASmoothRootIsBracketedFromBothSidesInFewEvaluations) {
   EXPECT_LE(evaluations, 8);
   EXPECT_NEAR(t, std::numbers::pi / 2, kRootTolerance);
   EXPECT_LE(std::cos(t), 0.0);  // the post-event end
+}
+
+// The tolerance made once per solve is boost's eps_tolerance test, with the nudge half its width,
+// on brackets just inside and just outside the width, at the default bits (a constant, no
+// ldexp) and at others (ldexp as before).
+TEST(EventLocator, CrossingToleranceIsEpsToleranceWithHalfItsWidthAsTheNudge) {
+  for (int bits : {std::numeric_limits<double>::digits - 3, 20, 40, 52}) {
+    const CrossingTolerance<double> tol = CrossingTolerance<double>::make(bits);
+    boost::math::tools::eps_tolerance<double> boost_tol(bits);  // its test is not const
+    const double width = std::max(std::ldexp(1.0, 1 - bits), 4 * 2.220446049250313e-16);
+    EXPECT_EQ(tol.nudge, width / 2) << bits;
+    for (double a : {1e-3, 0.7, 3.0, 2e5}) {
+      for (double k : {0.25, 0.5, 0.99, 1.0, 1.01, 2.0, 8.0}) {
+        const double b = a + k * tol.eps * a;
+        EXPECT_EQ(tol(a, b), boost_tol(a, b)) << bits << " " << a << " " << k;
+        EXPECT_EQ(tol(-b, -a), boost_tol(-b, -a)) << bits << " " << a << " " << k;
+      }
+    }
+  }
 }
 
 TEST(EventLocator, FindsFallingRootOfCosine) {

@@ -481,9 +481,17 @@ class ImpactDriver {
     // nothing and the same roots are active (same branch): not evaluated twice
     const bool reuse = roots_at_end_.valid && roots_at_end_.size == active.size() &&
                        roots_at_end_.kinds == active.kinds;
-    Earliest earliest =
-        locate_earliest(scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate, active.roots,
-                        root, opt_.locator, opt_.locate_events, reuse ? &roots_at_end_.g : nullptr);
+    // the roots at the step's end from the stepper's derivative there, where it has one
+    std::array<T, ActiveEvents::capacity> g1{};
+    const std::array<T, ActiveEvents::capacity>* at_end = nullptr;
+    if constexpr (requires { stepper_.f1(); }) {
+      for (int i = 0; i < active.size(); ++i)
+        g1[i] = event_root_at(active.kinds[i], sys_, stepper_.x1(), stepper_.f1());
+      at_end = &g1;
+    }
+    Earliest earliest = locate_earliest(
+        scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate, active.roots, root,
+        opt_.locator, opt_.locate_events, reuse ? &roots_at_end_.g : nullptr, at_end);
     roots_at_end_ = {!earliest.t, active.size(), active.kinds, earliest.g1};
     return earliest;
   }

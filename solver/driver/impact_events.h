@@ -96,6 +96,20 @@ typename System::value_type event_root(EventKind k, const System& sys,
   }
 }
 
+// The same root at a state s whose derivative f = ds/dtau on the current branch the stepper has
+// already computed (a step's end, the first stage of the next step): maximum compression's
+// dz/dtau and separation's F are components of f (ImpactSystem::operator(): f[Z] = w - 2 zeta
+// F, f[J] = F; without a dashpot z' = f[A] = w), the same expressions event_root evaluates,
+// bit for bit, without evaluating the law again. The other roots as event_root.
+template <class System>
+typename System::value_type event_root_at(EventKind k, const System& sys,
+                                          const typename System::state_type& s,
+                                          const typename System::state_type& f) {
+  if (k == EventKind::max_compression) return f[System::has_dashpot ? System::Z : System::A];
+  if (k == EventKind::separation && !sys.tension) return f[System::J];
+  return event_root(k, sys, s);
+}
+
 // The events active on one step, at most four (loading: yield, max_compression,
 // max_displacement, peak_force; unloading: max_displacement, peak_force, separation).
 struct ActiveEvents {

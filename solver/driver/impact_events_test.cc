@@ -56,6 +56,41 @@ TEST(ImpactEvents, LoadingBelowYieldWatchesTheLawsKinkMaxCompressionAndMaxDispla
   EXPECT_LT(event_root(EventKind::yield, sys, x1), 0.0);  // pre-event side of a rising root
 }
 
+// The roots at a step's end read from the derivative the stepper computed there are the roots
+// event_root evaluates, bit for bit, on every branch: loading below and above the kink,
+// unloading (with and without a dashpot), and a law that allows tension (separation at z = 0).
+template <class System>
+void expect_roots_at_end_equal(const System& sys, const typename System::state_type& x) {
+  typename System::state_type f{};
+  sys(x, f, 0.0);
+  for (const ImpactEventRow& row : kImpactEvents) {
+    if (row.kind == EventKind::yield && !law_segment_end(sys.law, sys.branch)) continue;
+    if (row.kind == EventKind::peak_force && !System::rate_dependent) continue;
+    EXPECT_EQ(event_root_at(row.kind, sys, x, f), event_root(row.kind, sys, x))
+        << to_string(row.kind);
+  }
+}
+
+TEST(ImpactEvents, RootsAtAStepsEndFromItsDerivativeAreTheRootsBitForBit) {
+  Plastic sys = plastic_system();
+  const Plastic::state_type x{0.31, 0.47, 0.29, 0.2, 0.1, 0.03};
+  expect_roots_at_end_equal(sys, x);  // loading, Hertzian
+  law_next_segment(sys.law, sys.branch);
+  expect_roots_at_end_equal(sys, x);  // loading, plastic
+  law_begin_unloading(sys.law, sys.branch, 0.4);
+  expect_roots_at_end_equal(sys, x);  // unloading
+  ImpactSystem<ElastoplasticLaw, false> undamped;
+  undamped.law = sys.law;
+  law_begin_unloading(undamped.law, undamped.branch, 0.4);
+  expect_roots_at_end_equal(undamped, {0.31, -0.2, 0.1, 0.05});
+  ImpactSystem<HuntCrossleyLaw, false> hc;
+  hc.law = {1.0, 0.2};
+  hc.tension = true;
+  expect_roots_at_end_equal(hc, {0.2, -0.3, 0.05, 0.04});
+  hc.tension = false;
+  expect_roots_at_end_equal(hc, {0.2, -0.3, 0.05, 0.04});
+}
+
 TEST(ImpactEvents, YieldIsProbedOnAStepThatAlsoReachesMaxCompression) {
   Plastic sys = plastic_system();
   // z' = w - 2 zeta F: at x1 the force 0.2^{1.5} = 0.089 with w = 0.001 gives z' < 0

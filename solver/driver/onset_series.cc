@@ -51,7 +51,14 @@ double onset_series_dashpot_work_error_bound(double kappa, double beta, double t
 
 double onset_series_reach(double kappa, double beta, double tolerance) {
   // max(p, r) <= s_max  <=>  tau <= (s_max/kappa)^{2/5} and tau <= (s_max/(beta kappa))^{2/3}
-  const double s_max = std::pow(tolerance / onset_series::kErrorConstant, 1.0 / (kDegree + 1));
+  // s_max depends on the tolerance alone, the same for every impact of a sweep: the last one
+  // is kept per thread (one pow of the three an impact)
+  thread_local double last_tolerance = 0.0, last_s_max = 0.0;
+  if (tolerance != last_tolerance) {
+    last_s_max = std::pow(tolerance / onset_series::kErrorConstant, 1.0 / (kDegree + 1));
+    last_tolerance = tolerance;
+  }
+  const double s_max = last_s_max;
   double tau = std::pow(s_max / kappa, 0.4);
   if (beta > 0) tau = std::min(tau, std::pow(s_max / (beta * kappa), 2.0 / 3.0));
   return tau;

@@ -185,6 +185,43 @@ TEST(ExponentialStepper, AdaptiveStepsMeetTheTolerance) {
   EXPECT_NEAR(gap[1], y[1] - wr, 1e-14);
 }
 
+// Free motion (no force): z_kin and its rate at the probes and off them against every mode's own
+// cos and sin. 41 slow modes (omega h from 0.01 to 3.99, below kSeriesBelow: summed over the
+// modes first as a polynomial, in every band of term counts and with blocks of four and their
+// remainders) and three fast ones (turned per mode). The polynomial's rounding is ~eps sum |u_k|
+// cosh(omega_k h) (<= 27 eps a mode at omega h = 4, the terms alternate), the per-mode sum's a few
+// eps a mode: 1e-14 of the amplitudes' sum holds both with room for the 44 modes' sums.
+TEST(ExponentialStepper, FreeMotionOfSlowAndFastModesIsExact) {
+  LinearModes s;
+  for (int i = 0; i <= 40; ++i) s.w.push_back(0.01 + 3.98 * i / 40.0);
+  for (double om : {4.5, 31.0, 290.0}) s.w.push_back(om);
+  s.g.assign(s.w.size(), 0.1);
+  s.k = 0.0, s.C = 0.0;
+  std::vector<double> x(s.size(), 0.0);
+  x[0] = 0.3, x[1] = -0.2;
+  double amplitude = 0.0;
+  for (std::size_t i = 0; i < s.modes(); ++i) {
+    x[2 + 2 * i] = std::sin(1.7 * i + 0.4) / (1.0 + i);
+    x[3 + 2 * i] = std::cos(0.9 * i) * s.w[i] / (2.0 + i);
+    amplitude += std::hypot(x[2 + 2 * i], x[3 + 2 * i] / s.w[i]) * std::max(1.0, s.w[i]);
+  }
+  PlateExponentialStepper<LinearModes> st(1e-10, 1e-12, 1.0);
+  st.fix_step(0);  // h = 1
+  st.start(s, 0.0, x);
+  ASSERT_TRUE(st.step(s).ok);
+  for (double t : {1.0 / 16, 0.25, 0.5, 13.0 / 16, 0.37, 0.9, 1.0}) {
+    double w = 0.0, wr = 0.0;
+    for (std::size_t i = 0; i < s.modes(); ++i) {
+      const double c = std::cos(s.w[i] * t), sn = std::sin(s.w[i] * t);
+      w += x[2 + 2 * i] * c + x[3 + 2 * i] / s.w[i] * sn;
+      wr += -x[2 + 2 * i] * s.w[i] * sn + x[3 + 2 * i] * c;
+    }
+    const auto gap = st.event_gap(t);
+    EXPECT_NEAR(gap[0], x[0] + x[1] * t - w, 1e-14 * amplitude) << "t = " << t;
+    EXPECT_NEAR(gap[1], x[1] - wr, 1e-14 * amplitude) << "t = " << t;
+  }
+}
+
 // A linear spring on the 200 mm plate (an expression law, clamped at F >= 0): the contact force is
 // smooth from its onset (F ~ k v0 t, a polynomial), only the separation's kink is not. The
 // exponential stepper at its default rtol 1e-10 against DOP853 at rtol 1e-12 on the same modes:

@@ -56,13 +56,15 @@ class ModePhases {
   // The modes whose phase is a product (the rest call sin and cos).
   std::size_t on_lattice() const { return on_lattice_; }
 
-  // c[k] = cos(omega_k t), s[k] = sin(omega_k t), k < size() (c, s resized).
-  void at(double t, std::vector<double>& c, std::vector<double>& s) const {
+  // c[k] = cos(omega_k t), s[k] = sin(omega_k t), first <= k < size() (c, s resized; the
+  // entries below `first` are left as they were).
+  void at(double t, std::vector<double>& c, std::vector<double>& s, std::size_t first = 0) const {
     const std::size_t N = omega_.size();
     c.resize(N), s.resize(N);
+    if (first >= N) return;
     rotations(split_.along_x, max_m_, t, cx_, sx_);
     rotations(split_.along_y, max_n_, t, cy_, sy_);
-    for (std::size_t k = 0; k < N; ++k) {
+    for (std::size_t k = first; k < N; ++k) {
       const auto [m, n] = pair_[k];
       if (m < 0) {
         c[k] = std::cos(omega_[k] * t), s[k] = std::sin(omega_[k] * t);

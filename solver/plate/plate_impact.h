@@ -62,6 +62,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,9 +104,10 @@ struct PlateImpactOptions {
   double truncation_tol = 0.0;
   std::size_t max_modes = 20000;  // more is bad input (plate_modes.h)
   // The modes above the cut-off (plate_modes.h): their static compliance C_res in series with
-  // the spring (the default), one equivalent oscillator matching C_res and D_res (a faster order
-  // in the cut-off), or nothing (plain truncation, for the convergence study).
-  DroppedModes dropped = DroppedModes::static_compliance;
+  // the spring, one equivalent oscillator matching C_res and D_res (a faster order in the
+  // cut-off), or nothing (plain truncation, for the convergence study). nullopt: as the scene's
+  // [structure] dropped_modes says, the static compliance when it says nothing.
+  std::optional<DroppedModes> dropped;
   // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h),
   // Boost.Odeint's dense dopri5 (a second integrator for the same equations), or the exponential
   // collocation of exponential_stepper.h (the modes advanced exactly for a polynomial force).
@@ -174,7 +176,9 @@ struct PlateImpactResult {
   // C_res of the dropped modes [m/N] (0 when options.dropped is truncated; with the oscillator
   // its static compliance, not in series with the spring)
   double residual_compliance = nan;
-  double residual_omega = nan;   // omega_e of the equivalent oscillator [rad/s] (when used)
+  double residual_omega = nan;  // omega_e of the equivalent oscillator [rad/s] (when used)
+  // what the run did with the modes above the cut-off (options, else the scene's)
+  DroppedModes dropped = DroppedModes::static_compliance;
   double plate_mass = nan;       // rho h a b [kg]
   double excursion_bound = nan;  // B at the end [m]
   double t_end = nan;            // when no further contact was possible [s]

@@ -70,7 +70,7 @@ class PlateImpactDriver {
   PlateImpactDriver(const Law& law, const Scales& k, const PlateModes& modes, double m,
                     const PlateImpactOptions& opt)
       : law_(law),
-        sys_(law, k, modes, m, opt.dropped),
+        sys_(law, k, modes, m, opt.dropped.value_or(DroppedModes::static_compliance)),
         scales_(k),
         opt_(opt),
         stepper_(make_plate_stepper<Stepper>(opt)) {}
@@ -104,6 +104,7 @@ class PlateImpactDriver {
     c.t_start = t * scales_.time;
     const double v_start = x[1];
     stepper_.start(sys_, t, x);
+    fired_.reset();
     if (opt_.record_force) out.force_history.push_back({t * scales_.time, 0.0});
     for (;;) {
       if (out.steps + out.free_flight_steps >= opt_.max_steps)
@@ -128,8 +129,11 @@ class PlateImpactDriver {
       // contact would run past its separation with no root watching it (measured: the 5 mm
       // ball at cut-off 80, rtol 1e-12, went on in tension to -35 N and ended with e 0.032
       // instead of 0.192).
-      if (*hit == Root::reload && System::z_kin_rate(x) <= 0.0)
+      fired_ = *hit;
+      if (*hit == Root::reload && System::z_kin_rate(x) <= 0.0) {
         on_event(Root::max_compression, x, c, out);
+        fired_ = Root::max_compression;
+      }
       stepper_.start(sys_, t, x);
     }
     c.t_end = t * scales_.time;
@@ -234,9 +238,25 @@ class PlateImpactDriver {
       }
       return 0.0;
     };
+    // At a restart on an event the root that fired is post-event (a zero does not fire again):
+    // the state interpolated there sums its modes in another order than the locator's values
+    // did, and its rounding (~1e-16 in zdot) could arm that root again, which then fired within
+    // the locator's tolerance of the same time, step after step (measured: the 5 mm ball at
+    // cut-off 20, rtol 1e-5, 1 to 4 maxima of compression at one maximum, as rounding fell).
+    const EventState s0 = event_state(stepper_.x0());
+    std::array<double, 3> g0{};
+    for (int i = 0; i < set.size; ++i) {
+      g0[static_cast<std::size_t>(i)] = g(i, s0);
+      if (fired_ && meaning[static_cast<std::size_t>(i)] == *fired_)
+        g0[static_cast<std::size_t>(i)] =
+            set.roots[static_cast<std::size_t>(i)].direction == Direction::falling
+                ? std::min(g0[static_cast<std::size_t>(i)], 0.0)
+                : std::max(g0[static_cast<std::size_t>(i)], 0.0);
+    }
+    fired_.reset();
     EventInterpolant interp(*this);
-    const auto ec = locate_earliest<3>(stepper_.t0(), event_state(stepper_.x0()), stepper_.t1(),
-                                       event_state(stepper_.x1()), interp, set, g, kProbes, true);
+    const auto ec = locate_earliest<3>(stepper_.t0(), s0, stepper_.t1(), event_state(stepper_.x1()),
+                                       interp, set, g, kProbes, true, &g0);
     std::optional<Root> r;
     t = ec.t ? *ec.t : stepper_.t1();
     if (ec.t) r = meaning[static_cast<std::size_t>(ec.first)];
@@ -377,7 +397,8 @@ class PlateImpactDriver {
   PlateImpactOptions opt_;
   Stepper stepper_;
   typename System::History loading_history_{};
-  double reload_force_ = 0.0;               // F(z_m) on the unloading branch, normalised
+  double reload_force_ = 0.0;  // F(z_m) on the unloading branch, normalised
+  std::optional<Root> fired_;  // the event the stepper was restarted on (locate(): post-event)
   State sample_ = State(sys_.size(), 0.0);  // record_force()'s interpolated state
 };
 

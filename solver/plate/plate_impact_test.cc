@@ -86,6 +86,33 @@ TEST(PlateImpact, TheResidualOscillatorKeepsTheLedger) {
   EXPECT_NEAR(r.impulse, s.mass * (1.0 + r.e), 1e-12);
 }
 
+// The scene's [structure] dropped_modes chooses what the run does with the modes above the
+// cut-off when the options do not: the oscillator from the scene is the same run, to the bit, as
+// the oscillator from the options; options that name one win over the scene; without either the
+// static compliance (the default).
+TEST(PlateImpact, TheScenesDroppedModesAreUsedUnlessTheOptionsNameThem) {
+  Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
+  PlateImpactOptions opt;
+  opt.cutoff = 20.0;
+  const PlateImpactResult plain = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  EXPECT_EQ(plain.dropped, DroppedModes::static_compliance);
+  PlateImpactOptions oscillator = opt;
+  oscillator.dropped = DroppedModes::oscillator;
+  const PlateImpactResult by_options = simulate_plate_impact(s, LawKind::hertz, {}, oscillator);
+  s.damping.structure.dropped_modes = DroppedModes::oscillator;
+  const PlateImpactResult by_scene = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+  ASSERT_TRUE(plain.ok && by_options.ok && by_scene.ok) << by_scene.reason;
+  EXPECT_EQ(by_scene.dropped, DroppedModes::oscillator);
+  EXPECT_EQ(by_scene.e, by_options.e);
+  EXPECT_EQ(by_scene.residual_omega, by_options.residual_omega);
+  EXPECT_NE(by_scene.e, plain.e);
+  PlateImpactOptions named = opt;
+  named.dropped = DroppedModes::static_compliance;
+  const PlateImpactResult overridden = simulate_plate_impact(s, LawKind::hertz, {}, named);
+  EXPECT_EQ(overridden.dropped, DroppedModes::static_compliance);
+  EXPECT_EQ(overridden.e, plain.e);
+}
+
 // The elastoplastic law on a flexible plate: z has several maxima in one contact (the plate's
 // vibration reloads the spring), the ledger holds with the plastic work, and W_p is the loop
 // area of the largest z_m (reloading below z_m retraces the unloading curve).

@@ -162,26 +162,27 @@ PlateImpactResult plate_impact_at_cutoff(const Law& law, const PlateSetup& setup
   PlateModes modes;
   // no mode kept: the plate is static (plate_regime.h's quasi-static model), whatever opt.dropped
   PlateImpactOptions run = opt;
+  DroppedModes dropped = opt.dropped.value_or(DroppedModes::static_compliance);
   if (cutoff == 0.0) {
     modes = static_plate_modes(setup.plate);
-    if (run.dropped == DroppedModes::oscillator) run.dropped = DroppedModes::static_compliance;
+    if (dropped == DroppedModes::oscillator) dropped = DroppedModes::static_compliance;
   } else {
     PlateModeOptions mo;
     mo.omega_cut = cutoff * setup.omega_s;
     mo.max_modes = opt.max_modes;
     mo.static_compliance = setup.static_compliance;
-    mo.residual_moment = run.dropped == DroppedModes::oscillator;
+    mo.residual_moment = dropped == DroppedModes::oscillator;
     modes = plate_modes(setup.plate, mo);
   }
+  run.dropped = dropped;
   PlateImpactResult out;
+  out.dropped = dropped;
   out.mode_count = modes.modes.size();
   out.cutoff = cutoff;
   out.omega_cut = modes.omega_cut;
   out.static_compliance = modes.static_compliance.value;
-  out.residual_compliance =
-      run.dropped == DroppedModes::truncated ? 0.0 : modes.residual_compliance;
-  if (run.dropped == DroppedModes::oscillator)
-    out.residual_omega = residual_oscillator(modes).omega;
+  out.residual_compliance = dropped == DroppedModes::truncated ? 0.0 : modes.residual_compliance;
+  if (dropped == DroppedModes::oscillator) out.residual_omega = residual_oscillator(modes).omega;
   out.plate_mass = setup.plate.mass();
   catching_plate_failures(out, [&] {
     if constexpr (!Law::rate_dependent)
@@ -199,10 +200,13 @@ PlateImpactResult plate_impact(const Law& law, const Scene& scene, const Derived
   if (!(opt.truncation_tol >= 0.0 && std::isfinite(opt.truncation_tol)))
     throw std::invalid_argument("PlateImpactOptions::truncation_tol must be finite and >= 0");
   const PlateSetup setup = plate_setup<Law>(scene, p);
-  if (!(opt.truncation_tol > 0.0 && opt.cutoff > 0.0))
-    return plate_impact_at_cutoff(law, setup, p, opt, opt.cutoff);
+  PlateImpactOptions run = opt;  // the dropped modes: the options', else the scene's
+  if (!run.dropped)
+    run.dropped = scene.damping.structure.dropped_modes.value_or(DroppedModes::static_compliance);
+  if (!(run.truncation_tol > 0.0 && run.cutoff > 0.0))
+    return plate_impact_at_cutoff(law, setup, p, run, run.cutoff);
   return run_to_truncation_tolerance(
-      opt, [&](double c) { return plate_impact_at_cutoff(law, setup, p, opt, c); },
+      run, [&](double c) { return plate_impact_at_cutoff(law, setup, p, run, c); },
       [&](double c) { return count_plate_modes(setup.plate, c * setup.omega_s); });
 }
 

@@ -259,15 +259,45 @@ double plate_gain_density(const FinitePlate& p) {
   return I / (2.0 * pi * pi * std::sqrt(p.density * p.thickness));
 }
 
+// The modes are visited as for_each_excited_mode does, but the bounds compare omega^2 (pi^4/(rho h)
+// times the quartic form k(m, n) of plate_mode_frequency) instead of omega, so a mode costs no
+// square root, and a row m whose sin(m pi x0/a)^2 is below kNodalShape (every W of it is) is
+// skipped whole: callgrind, the 5 mm ball at cut-off 20 (~3500 excited modes to 8 omega_cut),
+// 0.74M -> 0.34M instructions a call, D_res the same to rounding. Where omega^2 lies within 1e-12
+// of omega_cut^2 the mode is decided by plate_mode_frequency itself, as plate_modes() decides what
+// it keeps.
 double dropped_compliance_moment(const FinitePlate& p, double omega_cut, double reach) {
   const double modal_mass = p.density * p.thickness * p.length_x * p.length_y / 4.0;
   const double Omega = reach * omega_cut;
+  const OrthotropicBending& d = p.bending;
+  const double H2 = 2.0 * (d.D12 + 2.0 * d.D66),
+               to_omega2 = pi * pi * pi * pi / (p.density * p.thickness);
+  const double cut2 = omega_cut * omega_cut, reach2 = Omega * Omega;
+  const double inv_a = 1.0 / p.length_x, inv_b = 1.0 / p.length_y;
+  std::vector<double> sy;
   double sum = 0.0;  // positive terms: rounding ~ 1e-16 of the sum per term, in any order
-  for_each_excited_mode(p, Omega, [&](int m, int n, double W) {
-    const double om = plate_mode_frequency(p, m, n);
-    if (om > omega_cut) sum += W * W / (om * om * om * om);
-    return true;
-  });
+  for (int m = 1;; ++m) {
+    const double x = m * inv_a, x2 = x * x, row = d.D11 * x2 * x2, mixed = H2 * x2;
+    auto omega2 = [&](int n) {
+      const double y = n * inv_b, y2 = y * y;
+      return to_omega2 * (row + mixed * y2 + d.D22 * y2 * y2);
+    };
+    if (!(omega2(1) <= reach2)) break;
+    const double sx = std::sin(m * pi * p.impact_x / p.length_x);
+    if (sx * sx < kNodalShape) continue;  // a nodal line: every W of the row is below it
+    for (int n = 1;; ++n) {
+      const double w2 = omega2(n);
+      if (!(w2 <= reach2)) break;
+      if (static_cast<std::size_t>(n) > sy.size())
+        sy.push_back(std::sin(n * pi * p.impact_y / p.length_y));
+      const double W = sx * sy[static_cast<std::size_t>(n - 1)];
+      if (W * W < kNodalShape) continue;
+      const bool dropped = std::abs(w2 - cut2) <= 1e-12 * cut2
+                               ? plate_mode_frequency(p, m, n) > omega_cut
+                               : w2 > cut2;
+      if (dropped) sum += W * W / (w2 * w2);
+    }
+  }
   return sum / modal_mass + plate_gain_density(p) / (3.0 * Omega * Omega * Omega);
 }
 

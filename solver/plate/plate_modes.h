@@ -101,12 +101,8 @@ inline constexpr double kDoubleRoot = 1e-5;
 // D_res is summed mode by mode up to this multiple of omega_cut, by the gain density beyond.
 inline constexpr double kMomentReach = 8.0;
 
-// What the impact model does with the modes above the cut-off (above).
-enum class DroppedModes {
-  truncated,          // nothing (plain truncation; the convergence study)
-  static_compliance,  // C_res in series with the contact spring (mode acceleration)
-  oscillator,         // one equivalent oscillator matching C_res and D_res
-};
+// What the impact model does with the modes above the cut-off (above): DroppedModes, declared
+// with the scene's [structure] key that chooses it (scene/structure.h).
 
 struct PlateMode {
   int m = 0, n = 0;    // half-waves along x and y

@@ -136,6 +136,7 @@ Scene infinite_plate_scene(const Scene& finite) {
   st.edges.reset();
   st.impact_x.reset();
   st.impact_y.reset();
+  st.dropped_modes.reset();  // the infinite plate has no modes to drop
   return s;
 }
 

@@ -63,7 +63,7 @@ std::string_view to_string(PlateModel m);
 std::optional<PlateModel> parse_plate_model(const std::string& name);
 
 // The scene of a cheaper model: half-space (no dashpot), infinite plate (the same plate
-// without its lengths, edges and impact point; laminate D's as Olsson's D* in
+// without its lengths, edges, impact point and dropped_modes; laminate D's as Olsson's D* in
 // bending_stiffness). The quasi-static model keeps the finite plate and runs without modes.
 Scene half_space_scene(const Scene& finite);
 Scene infinite_plate_scene(const Scene& finite);

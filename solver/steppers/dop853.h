@@ -221,6 +221,8 @@ class Dop853Stepper : public AdaptiveStepState<System> {
     const T th = (t - t0_) / (t1_ - t0_);
     for (std::size_t m = 0; m < x1_.size(); ++m) out[m] = dense(th, m);
   }
+  // f(t1, x1) on the law's present branch (the next step's first stage, FSAL)
+  const state_type& f1() const { return k_[12]; }
   // the stages the continuous extension's r's weigh (d[q][j] != 0, with k0 and k12)
   static constexpr std::array<std::size_t, 12> kDenseStages{0,  5,  6,  7,  8,  9,
                                                             10, 11, 12, 13, 14, 15};

@@ -86,6 +86,9 @@ class Dp45Stepper : public AdaptiveStepState<System> {
     }
   }
 
+  // f(t1, x1) on the law's present branch (the next step's first stage, FSAL)
+  const state_type& f1() const { return k7_; }
+
   void interpolate(const System&, T t, state_type& out) const {
     size_like(out, x1_);
     const T th = (t - t0_) / (t1_ - t0_);
