@@ -390,12 +390,15 @@ void add_peer_ratio_targets(BenchReport& rep, const LimitInputs& limits) {
   const bool adams_faster = !(bdf < adams);  // NaN (level not reached) loses
   const double cvode = adams_faster ? adams : bdf;
   const std::string at = " at |de|/e <= 1e-8 on the paper scene";
-  rep.targets.push_back(
-      target("ivv >= 10x faster than the odeint idiom" + at, 0.1, "ratio", row->ivv_us / odeint,
-             "ivv's fastest run (" + row->ivv_integrator +
-                 ") / odeint-dopri5-dense's fastest, both "
-                 "reaching the level, measured in this run (peers: verification/peers.h)",
-             "peers"));
+  // >= 5x is the target; >= 10x (about the arithmetic limit's distance) is the goal after it
+  for (const auto& [times, ratio] : {std::pair{"5x", 0.2}, std::pair{"10x", 0.1}})
+    rep.targets.push_back(
+        target(std::string("ivv >= ") + times + " faster than the odeint idiom" + at, ratio,
+               "ratio", row->ivv_us / odeint,
+               "ivv's fastest run (" + row->ivv_integrator +
+                   ") / odeint-dopri5-dense's fastest, both reaching the level, "
+                   "measured in this run (peers: verification/peers.h)",
+               "peers"));
   rep.targets.push_back(
       target("ivv >= 25x faster than CVODE" + at, 0.04, "ratio", row->ivv_us / cvode,
              "ivv's fastest run (" + row->ivv_integrator +
@@ -804,8 +807,10 @@ void add_paper_targets(const Timing& timing, const LimitInputs& limits, BenchRep
   std::string who8, who12, whos;
   const double t8 = best_us(rep.points, paper, "elastoplastic", 1e-8, false, &who8);
   const double t12 = best_us(rep.points, paper, "elastoplastic", 1e-12, false, &who12);
+  // 2.5 us: the single impact's target (about 5x the odeint idiom's 13 us when it was set; 10x,
+  // ~1.3 us, is the arithmetic-limit goal)
   rep.targets.push_back(target(
-      "|de|/e <= 1e-8 on the paper scene", 3.0, "us", t8,
+      "|de|/e <= 1e-8 on the paper scene", 2.5, "us", t8,
       "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
       "per-impact"));
   describe_paper_point(rep.targets.back(),
