@@ -186,7 +186,8 @@ PlateReference plate_reference(const Scene& s, LawKind law, const BenchOptions& 
   }
   const double e_fine = ref.result.e;
   if (ref.result.ok) {
-    ref.correction = (ref.result.e - coarse.e) / (std::pow(2.0, kTruncationOrder) - 1.0);
+    ref.correction = (ref.result.e - coarse.e) /
+                     (std::pow(2.0, truncation_order(DroppedModes::static_compliance)) - 1.0);
     ref.result.e += ref.correction;
   }
   ref.how = "reference: cut-off " + fmt(ref.options.cutoff) + " (" +
