@@ -134,11 +134,11 @@ struct PlateImpactOptions {
   // shipped scenes and the rule at its order bounds its error there (plate_modes.h, cases
   // plate.truncation.estimate-bounds.oscillator.*): its error changes sign with the cut-off, so
   // its first pair stays (20, 40) (kPlateFirstCutoff), and there its ringing costs more than
-  // its order saves. Measured by callgrind on `ivv simulate --rtol 1e-6` with the cut-off by the
-  // rule, all runs: the 5 mm ball 48.1M instructions (static compliance, cut-off 54.8 in 3 runs)
-  // against 32.6M (oscillator, 40 in 2 runs), 0.68 of it and both far above the ~10M of its
-  // 1 ms target; the coupon 138M against 312M (both at 40 in 2 runs: the oscillator's ringing
-  // doubles the steps), 2.25 times it.
+  // its order saves. Measured by callgrind inside simulate_plate_impact on `ivv simulate --rtol
+  // 1e-6 --atol 1e-8` (the bench's rows by the rule), all runs: the 5 mm ball 41.6M instructions
+  // (static compliance, cut-off 54.8 in 3 runs) against 27.7M (oscillator, 40 in 2 runs), 0.67
+  // of it and both far above the ~10M of its 1 ms target; the coupon 136.5M against 307.4M
+  // (both at 40 in 2 runs: the oscillator's ringing doubles the steps), 2.25 times it.
   std::optional<DroppedModes> dropped;
   // The stepper of the contacts: the hand-written DOP853 (solver/steppers/dop853.h),
   // Boost.Odeint's dense dopri5 (a second integrator for the same equations), or the exponential
