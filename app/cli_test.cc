@@ -572,8 +572,8 @@ TEST(Cli, FinitePlateSimulateReportsContactsAndModes) {
 }
 
 // [structure] dropped_modes reaches `simulate`: its JSON names it in the truncation block (the
-// static compliance when the scene says nothing); a name it does not know is bad input (exit 2)
-// naming the field and the accepted names.
+// static compliance when the scene says nothing) with the order the truncation rule took; a name it
+// does not know is bad input (exit 2) naming the field and the accepted names.
 TEST(Cli, FinitePlateDroppedModesFromTheScene) {
   const std::filesystem::path file = std::filesystem::temp_directory_path() /
                                      ("ivv_dropped_" + std::to_string(getpid()) + ".toml");
@@ -589,10 +589,12 @@ TEST(Cli, FinitePlateDroppedModesFromTheScene) {
   const CliRun osc = ivv("simulate --scene " + file.string() + " --law hertz --json");
   ASSERT_EQ(osc.exit_code, 0) << osc.err;
   EXPECT_EQ(nlohmann::json::parse(osc.out)["truncation"]["dropped_modes"], "oscillator");
+  EXPECT_EQ(nlohmann::json::parse(osc.out)["truncation"]["order"], 4.0);  // the rule's order
   write("");
   const CliRun plain = ivv("simulate --scene " + file.string() + " --law hertz --json");
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   EXPECT_EQ(nlohmann::json::parse(plain.out)["truncation"]["dropped_modes"], "static-compliance");
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["truncation"]["order"], 3.0);
   write("dropped_modes = \"modal\"\n");
   const CliRun bad = ivv("simulate --scene " + file.string() + " --law hertz --json");
   EXPECT_EQ(bad.exit_code, 2);

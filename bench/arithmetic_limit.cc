@@ -107,7 +107,7 @@ std::optional<double> parse_callgrind_total(std::string_view output) {
 
 namespace {
 
-// callgrind's total for `ivv sweep ARGS`, or nullopt with *why.
+// callgrind's total for `command` (valgrind on an `ivv` child), or nullopt with *why.
 std::optional<double> callgrind_total(const std::string& command, std::string* why) {
   std::FILE* pipe = ::popen((command + " 2>&1 >/dev/null").c_str(), "r");
   if (!pipe) {
@@ -131,16 +131,15 @@ std::optional<double> callgrind_total(const std::string& command, std::string* w
 
 InstructionCount count_instructions(const CountRequest& req) {
   const std::string valgrind = "valgrind --tool=callgrind --callgrind-out-file=/dev/null ";
-  const std::string toggle =
-      "--collect-atstart=no '--toggle-collect=ivv::simulate(ivv::ValidatedRequest const&*' ";
-  const std::string sweep = "'" + req.ivv + "' sweep -q --threads 1 ";
+  const std::string toggle = "--collect-atstart=no '--toggle-collect=" + req.collect + "' ";
+  const std::string sweep = "'" + req.ivv + "' " + req.command + " ";
   InstructionCount out{std::numeric_limits<double>::quiet_NaN(), ""};
   std::string why;
   if (req.simulate_only) {
     const std::string command = valgrind + toggle + sweep + req.args;
     if (const auto total = callgrind_total(command, &why)) {
       out.per_impact = *total / req.points;
-      out.how = "callgrind, inside simulate(), over " + std::to_string(req.points) +
+      out.how = "callgrind, inside " + req.collect + ", over " + std::to_string(req.points) +
                 " impacts: " + command;
     }
   } else {

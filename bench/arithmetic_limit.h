@@ -33,17 +33,23 @@ struct InstructionCount {
 // The total of "Collected : N" in valgrind --tool=callgrind's output; nullopt when absent.
 std::optional<double> parse_callgrind_total(std::string_view output);
 
-// What to count: `ivv sweep ARGS` (ARGS must write its rows to standard output: --out -).
+// What to count: `ivv COMMAND ARGS`, by default `ivv sweep -q --threads 1 ARGS` (ARGS must then
+// write its rows to standard output: --out -).
 struct CountRequest {
   std::string ivv;     // the executable's path
   std::string args;    // the sweep's arguments
   int points = 1;      // the impacts ARGS runs
   std::string single;  // one point of the same kind (whole-process counts only)
-  // true: callgrind collects inside simulate() alone (--toggle-collect on it) and the count is
+  // true: callgrind collects inside `collect` alone (--toggle-collect on it) and the count is
   // divided by `points`; false: the whole process is counted, once for `args` and once for
   // `single`, and the difference divided by points - 1 (start-up, the scene and the file set-up
   // cancel; the CSV rows and the journal stay in).
   bool simulate_only = true;
+  // The subcommand, and the functions callgrind collects inside when simulate_only (a
+  // --toggle-collect pattern): a sweep's simulate() by default; a finite plate's `simulate` and
+  // ivv::simulate_plate_impact* (every run of its truncation rule) for the bench's plate rows.
+  std::string command = "sweep -q --threads 1";
+  std::string collect = "ivv::simulate(ivv::ValidatedRequest const&*";
 };
 
 // Instructions per impact as `request` says, counted by callgrind in a child process.

@@ -259,12 +259,15 @@ nlohmann::json plate_simulation_json(const PlateRun& run) {
         // the modes above the cut-off ([structure] dropped_modes): "static-compliance",
         // "oscillator" or "truncated"
         {"dropped_modes", std::string(dropped_modes_name(run.result.dropped))},
+        // the order p of the rule below, that of the dropped modes' treatment
+        {"order", truncation_order(run.result.dropped)},
         {"rule",
          "modes with omega <= cutoff * max(1/T, sqrt(k_H 4/(rho h a b))) kept, the rest as "
          "dropped_modes says (by default the static compliance C_res in series; the oscillator "
          "also matches their second moment); error of e estimated from two cut-offs c' < c as "
-         "1.25 |e(c) - e(c')|/((c/c')^3 - 1) (observed order 3 in the cut-off, Roache's safety "
-         "factor 1.25); the cut-off raised from 40 until that estimate is within the "
+         "1.25 |e(c) - e(c')|/((c/c')^p - 1), p = order, the observed order of e in the cut-off "
+         "with that treatment (3 static compliance, 4 oscillator, 1 truncated), 1.25 Roache's "
+         "safety factor; the cut-off raised from 40 until that estimate is within the "
          "tolerance"}}},
       {"result", plate_result_json(run.result)},
       {"regime", run.regime ? plate_regime_json(*run.regime) : nlohmann::json(nullptr)},

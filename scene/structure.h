@@ -59,8 +59,8 @@ enum class PlateEdges { simply_supported };
 // What a finite plate's impact does with the modes above its cut-off (solver/plate/plate_modes.h):
 // their static compliance C_res in series with the spring (mode acceleration, the default), one
 // equivalent oscillator matching C_res and their second moment D_res (e converges as cut-off^-4
-// on the 5 mm ball, where the static compliance converges as cut-off^-3), or nothing (plain
-// truncation, for convergence studies).
+// on the 5 mm ball, where the static compliance converges as cut-off^-3; not the default: see
+// PlateImpactOptions::dropped), or nothing (plain truncation, for convergence studies).
 enum class DroppedModes {
   truncated,          // nothing
   static_compliance,  // C_res in series with the contact spring

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "scene/input_error.h"
 #include "scene/scene.h"
@@ -251,7 +252,7 @@ TEST(PlateImpact, CutoffChosenForTheTruncationTolerance) {
   EXPECT_LE(r.truncation_error, opt.truncation_tol);
   EXPECT_LT(r.cutoff_coarser, r.cutoff);
   EXPECT_GE(r.cutoff, opt.cutoff);
-  const double p = std::pow(r.cutoff / r.cutoff_coarser, kTruncationOrder) - 1.0;
+  const double p = std::pow(r.cutoff / r.cutoff_coarser, truncation_order(r.dropped)) - 1.0;
   EXPECT_DOUBLE_EQ(r.truncation_error, kTruncationSafety * std::abs(r.e - r.e_coarser) / p);
   PlateImpactOptions fixed;
   fixed.cutoff = r.cutoff;
@@ -260,6 +261,31 @@ TEST(PlateImpact, CutoffChosenForTheTruncationTolerance) {
   EXPECT_EQ(f.e, r.e);
   EXPECT_EQ(f.mode_count, r.mode_count);
   EXPECT_TRUE(std::isnan(f.truncation_error));
+}
+
+// The rule's order is that of what the dropped modes are (plate_impact.h truncation_order): the
+// same pair of runs read at order 4 with the equivalent oscillator, 1 with plain truncation.
+TEST(PlateImpact, TruncationRuleTakesTheOrderOfTheDroppedModes) {
+  const Scene s = steel_ball_on_plate(0.05, 0.04, 0.001);
+  EXPECT_EQ(truncation_order(DroppedModes::static_compliance), 3.0);
+  EXPECT_EQ(truncation_order(DroppedModes::oscillator), 4.0);
+  EXPECT_EQ(truncation_order(DroppedModes::truncated), 1.0);
+  // plain truncation converges as 1/cut-off: a looser tolerance keeps its modes few
+  const std::pair<DroppedModes, double> cases[] = {{DroppedModes::oscillator, 1e-5},
+                                                   {DroppedModes::truncated, 1e-3}};
+  for (const auto& [d, tol] : cases) {
+    PlateImpactOptions opt;
+    opt.cutoff = 10.0;
+    opt.truncation_tol = tol;
+    opt.dropped = d;
+    const PlateImpactResult r = simulate_plate_impact(s, LawKind::hertz, {}, opt);
+    ASSERT_TRUE(r.ok) << r.reason;
+    EXPECT_EQ(r.dropped, d);
+    const double p = std::pow(r.cutoff / r.cutoff_coarser, truncation_order(d)) - 1.0;
+    EXPECT_DOUBLE_EQ(r.truncation_error, kTruncationSafety * std::abs(r.e - r.e_coarser) / p)
+        << dropped_modes_name(d);
+    EXPECT_LE(r.truncation_error, opt.truncation_tol) << dropped_modes_name(d);
+  }
 }
 
 // A tolerance that needs more modes than the limit is refused by name: how many, and that the

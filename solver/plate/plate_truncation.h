@@ -4,8 +4,9 @@
 //
 // run_at(c) runs the impact with the cut-off c (multiples of omega_s) and returns its result;
 // modes_at(c) is the mode count that cut-off keeps. Two cut-offs c' = c/2 and c give
-//   est = kTruncationSafety * |e(c) - e(c')| / ((c/c')^kTruncationOrder - 1),
-// and while est > tol the cut-off grows by max(1.25, 1.2 (est/tol)^(1/kTruncationOrder)).
+//   est = kTruncationSafety * |e(c) - e(c')| / ((c/c')^p - 1),
+// p = truncation_order(opt.dropped) (the static compliance's when opt.dropped is empty), and while
+// est > tol the cut-off grows by max(1.25, 1.2 (est/tol)^(1/p)).
 // A cut-off that would keep more than opt.max_modes modes is refused (InputError "structure",
 // naming the count); more than kMaxCutoffRefinements refinements is a failed run naming the
 // last estimate.
@@ -43,6 +44,7 @@ PlateImpactResult run_to_truncation_tolerance(const PlateImpactOptions& opt, Run
                                               ModesAt modes_at) {
   require_plate_mode_count(modes_at(opt.cutoff), opt, opt.cutoff,
                            std::numeric_limits<double>::quiet_NaN());
+  const double p = truncation_order(opt.dropped.value_or(DroppedModes::static_compliance));
   double c_prev = 0.5 * opt.cutoff, c = opt.cutoff;
   PlateImpactResult coarse = run_at(c_prev);
   if (!coarse.ok) return coarse;
@@ -51,8 +53,8 @@ PlateImpactResult run_to_truncation_tolerance(const PlateImpactOptions& opt, Run
     PlateImpactResult fine = run_at(c);
     fine.cutoff_runs = ++runs;
     if (!fine.ok) return fine;
-    const double est = kTruncationSafety * std::abs(fine.e - coarse.e) /
-                       (std::pow(c / c_prev, kTruncationOrder) - 1.0);
+    const double est =
+        kTruncationSafety * std::abs(fine.e - coarse.e) / (std::pow(c / c_prev, p) - 1.0);
     fine.truncation_error = est;
     fine.cutoff_coarser = c_prev;
     fine.e_coarser = coarse.e;
@@ -64,8 +66,7 @@ PlateImpactResult run_to_truncation_tolerance(const PlateImpactOptions& opt, Run
                     std::to_string(kMaxCutoffRefinements) + " refinements";
       return fine;
     }
-    const double grow =
-        std::max(1.25, 1.2 * std::pow(est / opt.truncation_tol, 1.0 / kTruncationOrder));
+    const double grow = std::max(1.25, 1.2 * std::pow(est / opt.truncation_tol, 1.0 / p));
     require_plate_mode_count(modes_at(c * grow), opt, c * grow, est);
     c_prev = c;
     c *= grow;
