@@ -595,6 +595,10 @@ TEST(Cli, FinitePlateDroppedModesFromTheScene) {
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   EXPECT_EQ(nlohmann::json::parse(plain.out)["truncation"]["dropped_modes"], "static-compliance");
   EXPECT_EQ(nlohmann::json::parse(plain.out)["truncation"]["order"], 3.0);
+  // without --rtol/--atol a finite plate integrates at the plate's own defaults, 1e-8 and 1e-10
+  // (kPlateSimulateRtol, kPlateSimulateAtol of solver/plate/plate_impact.h)
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["options"]["rtol"], 1e-8);
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["options"]["atol"], 1e-10);
   write("dropped_modes = \"modal\"\n");
   const CliRun bad = ivv("simulate --scene " + file.string() + " --law hertz --json");
   EXPECT_EQ(bad.exit_code, 2);

@@ -65,8 +65,11 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, ModelFlagSet set) {
   cmd.add_option("--model-tol", f.model_tolerance,
                  "a finite plate: the tolerance of the model choice, in e (units of v0) and "
                  "relative in F_max (default 1e-3)");
-  cmd.add_option("--rtol", f.rtol, "relative tolerance, adaptive integrators (default 1e-10)");
-  cmd.add_option("--atol", f.atol, "absolute tolerance, normalised units (default 1e-12)");
+  cmd.add_option(
+      "--rtol", f.rtol,
+      "relative tolerance, adaptive integrators (default 1e-10; 1e-8 on a finite plate)");
+  cmd.add_option("--atol", f.atol,
+                 "absolute tolerance, normalised units (default 1e-12; 1e-10 on a finite plate)");
   cmd.add_option("--dt", f.dt,
                  "fixed step of rk4 in normalised time tau = omega t (default 1e-3; omega = "
                  "omega0 for laws with yield, v0/z_mH for hertz and hunt-crossley)");

@@ -94,8 +94,8 @@ PlateRun run_plate_simulation(Scene scene, const RequestOptions& o) {
   run.law = law.law;
   run.parameters = std::move(law.parameters);
   run.expression = std::move(law.expression);
-  if (o.rtol) run.options.rtol = *o.rtol;
-  if (o.atol) run.options.atol = *o.atol;
+  run.options.rtol = o.rtol.value_or(kPlateSimulateRtol);
+  run.options.atol = o.atol.value_or(kPlateSimulateAtol);
   require(run.options.rtol > 0.0 && run.options.rtol < 1.0, "--rtol", "a number in (0, 1)",
           run.options.rtol);
   require(run.options.atol > 0.0 && run.options.atol < 1.0, "--atol", "a number in (0, 1)",

@@ -4,7 +4,8 @@
 //
 // From RequestOptions: the scene with --v0, the law (--law, or an expression law's --force and
 // --unload; --param), --rtol/--atol for every
-// model's integration, --model (auto, full, half-space, infinite-plate, quasi-static) and
+// model's integration (absent: kPlateSimulateRtol and kPlateSimulateAtol, 1e-8 and 1e-10), --model
+// (auto, full, half-space, infinite-plate, quasi-static) and
 // --model-tol. Flags that describe a dashpot (--zeta, --c, --lambda, --no-dashpot), an
 // integrator other than auto, --dt and --max-steps are refused by name (InputError): a finite
 // plate has no dashpot and runs its own integration. A law the plate does not model (rate-
