@@ -44,6 +44,27 @@ TEST(PlateImpact, WithoutModesIsTheTwoSpringModel) {
   EXPECT_NEAR((0.4 * K * z * z * std::sqrt(z) + 0.5 * C * F * F) / (0.5 * s.mass), 1.0, 1e-8);
 }
 
+// Without modes the flight after the separation is the ball alone leaving the static plate, and
+// whichever side of z_f rounding leaves it the run ends there with one contact: at rtol 1e-8 the
+// drop-weight coupon's quasi-static model (no mode kept) used to fail ("free flight: no step
+// bound") because the separation left alpha a rounding above z_f, where nothing bounds a step.
+// Every tolerance from 1e-6 to 1e-12, both shipped scenes.
+TEST(PlateImpact, WithoutModesTheFlightEndsOnEitherSideOfTheSet) {
+  for (const auto& [scene, law] : {std::pair{"drop-weight-coupon", LawKind::elastoplastic},
+                                   std::pair{"steel-ball-on-finite-steel-plate", LawKind::hertz}})
+    for (double rtol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
+      PlateImpactOptions opt;
+      opt.cutoff = 0.0;
+      opt.rtol = rtol;
+      opt.atol = 1e-2 * rtol;
+      const PlateImpactResult r = simulate_plate_impact(load_scene(scene), law, {}, opt);
+      ASSERT_TRUE(r.ok) << scene << " rtol " << rtol << ": " << r.reason;
+      EXPECT_EQ(r.mode_count, 0u);
+      EXPECT_EQ(r.contacts.size(), 1u) << scene << " rtol " << rtol;
+      EXPECT_GT(r.e, 0.0) << scene << " rtol " << rtol;  // both rebound (e 0.91 and ~1)
+    }
+}
+
 // A small thin plate outruns the ball: the first separation has the ball still moving towards
 // the plate (e_first < 0), contacts follow, and the run ends once the bound says no further
 // contact is possible. Energy and momentum hold over the whole story.
