@@ -1,0 +1,34 @@
+// The dop853 run of the paper's laws compiled a second time for CPUs with AVX2 and FMA
+// (solver/steppers/machine_code.h says which runs): the same C++ as run_typed<Dop853Stepper,
+// Law, Dashpot> of solver/simulate_impl.h, inlined whole into one entry per law whose machine
+// code uses fused multiply-adds and the AVX encodings. Only these entries carry the target, so
+// nothing the rest of the program calls is compiled for those CPUs (no template instantiated
+// twice under one name with different code).
+//
+// Covered: the elastoplastic law (the paper's, with and without the dashpot: the paper map and
+// the single impact) and Hertz (Zener's problem). Other laws and integrators run the baseline
+// code. Call only where cpu_has_fma_clone() is true.
+#pragma once
+
+#include <vector>
+
+#include "scene/scene.h"
+#include "solver/laws/elastoplastic.h"
+#include "solver/laws/hertz.h"
+#include "solver/result.h"
+#include "solver/steppers/integrator_options.h"
+
+namespace ivv {
+struct TrajectoryPoint;
+}
+
+namespace ivv::detail {
+
+ImpactResult run_dop853_fma(const ElastoplasticLaw& law, const Scene& scene,
+                            const IntegratorOptions& options, const DerivedParameters& p,
+                            std::vector<TrajectoryPoint>* trajectory);
+ImpactResult run_dop853_fma(const HertzLaw& law, const Scene& scene,
+                            const IntegratorOptions& options, const DerivedParameters& p,
+                            std::vector<TrajectoryPoint>* trajectory);
+
+}  // namespace ivv::detail
