@@ -1,9 +1,8 @@
 // The dop853 run of the paper's laws compiled a second time for CPUs with AVX2 and FMA
 // (solver/steppers/machine_code.h says which runs): the same C++ as run_typed<Dop853Stepper,
-// Law, Dashpot> of solver/simulate_impl.h, inlined whole into one entry per law whose machine
-// code uses fused multiply-adds and the AVX encodings. Only these entries carry the target, so
-// nothing the rest of the program calls is compiled for those CPUs (no template instantiated
-// twice under one name with different code).
+// Law, Dashpot> of solver/simulate_impl.h, instantiated in dop853_fma.cc on a law type of that
+// unit only, so its machine code (fused multiply-adds, AVX encodings) is that unit's own and
+// replaces no baseline code of the same templates (cpu_clone_symbols checks the object).
 //
 // Covered: the elastoplastic law (the paper's, with and without the dashpot: the paper map and
 // the single impact) and Hertz (Zener's problem). Other laws and integrators run the baseline

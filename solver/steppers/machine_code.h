@@ -2,13 +2,14 @@
 // no fused multiply-add), or a copy of the same C++ compiled for CPUs with AVX2 and FMA
 // (x86-64-v3: Intel Haswell and later, AMD Zen), chosen once per process from the CPU.
 //
-// The copy (solver/steppers/dop853_fma.cc) is the dop853 run of the built-in laws compiled with
-// GCC's target("avx2,fma") on one entry function that inlines the whole run (driver, stepper,
-// event locator, law), so nothing else in the program is compiled for those CPUs and the binary
-// runs on any x86-64. Where the compiler contracts a*b + c into one fused multiply-add, the
-// result is rounded once instead of twice: the last bits of a run differ from the baseline's,
-// within the integrator's stated error (the verification case `cpu.fma-clone-within-rtol`
-// runs a grid of the paper map through both and bounds |de|).
+// The copy (solver/steppers/dop853_fma.cc) is the dop853 run (driver, stepper, event locator,
+// system) of the elastoplastic and Hertz laws compiled under GCC's target("avx2,fma") and
+// instantiated on types local to that unit, so no code the rest of the program calls is compiled
+// for those CPUs and the binary runs on any x86-64 (cpu_clone_symbols checks the object). Where the
+// compiler contracts a*b + c into one fused multiply-add, the result is rounded once instead of
+// twice: the last bits of a run differ from the baseline's, within the integrator's stated error
+// (the verification cases cross.machine-code.* run grids of the paper map through both and bound
+// |de|).
 //
 // IVV_MACHINE_CODE=baseline in the environment (read once per process) forces the baseline
 // code everywhere, for reproducing a baseline run bit for bit on a newer CPU;
