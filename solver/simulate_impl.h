@@ -155,11 +155,8 @@ ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptio
 template <template <class> class Stepper, class Law, class T>
 constexpr bool has_fma_clone() {
   using System = ImpactSystem<Law, true, double>;
-  if constexpr (std::is_same_v<T, double> && std::is_same_v<Stepper<System>, Dop853Stepper<System>>)
-    return requires(const Law& law, const Scene& scene, const IntegratorOptions& options,
-                    const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
-      run_dop853_fma(law, scene, options, p, trajectory);
-    };
+  if constexpr (kHasFmaCopy<Law> && std::is_same_v<T, double>)
+    return std::is_same_v<Stepper<System>, Dop853Stepper<System>>;
   else
     return false;
 }

@@ -9,6 +9,7 @@
 // code. Call only where cpu_has_fma_clone() is true.
 #pragma once
 
+#include <type_traits>
 #include <vector>
 
 #include "scene/scene.h"
@@ -22,6 +23,12 @@ struct TrajectoryPoint;
 }
 
 namespace ivv::detail {
+
+// The laws with a copy: exactly these types (a law derived from one of them has its own members,
+// which the copy of the base would silently replace).
+template <class Law>
+inline constexpr bool kHasFmaCopy =
+    std::is_same_v<Law, ElastoplasticLaw> || std::is_same_v<Law, HertzLaw>;
 
 ImpactResult run_dop853_fma(const ElastoplasticLaw& law, const Scene& scene,
                             const IntegratorOptions& options, const DerivedParameters& p,
