@@ -241,6 +241,25 @@ TEST(SweepCli, BadInputLeavesNoFile) {
   }
 }
 
+// IVV_MACHINE_CODE (solver/steppers/machine_code.h) takes baseline or fastest; anything else is
+// bad input naming the variable, refused before any file appears.
+TEST(SweepCli, MachineCodeFromTheEnvironmentIsBaselineOrFastest) {
+  const fs::path csv = scratch("machine.csv");
+  const fs::path err = scratch("machine.err");
+  const std::string grid = " sweep --scene paper --v0 1,2 --zeta 0.1 -q --out " + csv.string();
+  EXPECT_EQ(shell("IVV_MACHINE_CODE=avx512 " + std::string(IVV_BINARY) + grid, err), 2);
+  EXPECT_NE(slurp(err).find("IVV_MACHINE_CODE"), std::string::npos) << slurp(err);
+  for (const char* suffix : {"", ".journal", ".partial"})
+    EXPECT_FALSE(fs::exists(csv.string() + suffix)) << suffix;
+  for (const char* code : {"baseline", "fastest"}) {
+    EXPECT_EQ(shell(std::string("IVV_MACHINE_CODE=") + code + " " + IVV_BINARY + grid, err), 0)
+        << code << ": " << slurp(err);
+    EXPECT_TRUE(fs::exists(csv)) << code;
+    fs::remove(csv);
+    fs::remove(scratch("machine.json"));
+  }
+}
+
 // The rows of a shell command's standard output (stderr to `err`); `rc` its exit code.
 std::string stdout_of(const std::string& cmd, const fs::path& err, int& rc) {
   const fs::path out = scratch("stdout.csv");

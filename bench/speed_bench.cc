@@ -1015,6 +1015,7 @@ std::string to_json(const BenchReport& r) {
                   {"logical_cores", r.machine.logical_cores},
                   {"compiler", r.machine.compiler},
                   {"build_type", r.machine.build_type},
+                  {"machine_code", r.machine.machine_code},
                   {"threads_used", 1}};
   j["points"] = nlohmann::json::array();
   for (const auto& p : r.points) j["points"].push_back(point_json(p));
@@ -1065,7 +1066,8 @@ std::string to_json(const BenchReport& r) {
 std::string to_text(const BenchReport& r) {
   std::ostringstream os;
   os << "machine: " << r.machine.cpu_model << ", " << r.machine.logical_cores << " cores, "
-     << r.machine.compiler << ", " << r.machine.build_type << "; one thread\n\n";
+     << r.machine.compiler << ", " << r.machine.build_type << ", machine code "
+     << r.machine.machine_code << "; one thread\n\n";
   os << "error level   ivv best [us] (integrator)";
   for (Peer p : kPeers) os << "   " << to_string(p) << " [us] (ratio)";
   os << "\n";

@@ -13,7 +13,8 @@ using verification::Series;
 
 std::string machine_text(const verification::MachineInfo& m) {
   return escape(m.cpu_model) + ", " + std::to_string(m.logical_cores) + " logical cores, " +
-         escape(m.compiler) + ", " + escape(m.build_type) + " build";
+         escape(m.compiler) + ", " + escape(m.build_type) + " build, machine code " +
+         escape(m.machine_code);
 }
 
 void work_precision_figures(const verification::WorkPrecisionStudy& study, const std::string& id,

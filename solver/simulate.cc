@@ -149,6 +149,8 @@ std::optional<IntegratorOptions::Invalid> IntegratorOptions::invalid() const {
   if (!(dt >= 0 && dt <= 0.5 && std::isfinite(dt)))
     return bad("--dt", "(0, 0.5] (normalised step)", dt);
   if (!(max_steps > 0)) return bad("--max-steps", "[1, 9223372036854775807]", max_steps);
+  if (const std::string& why = machine_code_environment_problem(); !why.empty())
+    return Invalid{"IVV_MACHINE_CODE", why};
   return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "solver/driver/capture_end_state.h"
 #include "solver/driver/impact_driver.h"
@@ -15,6 +16,8 @@
 #include "solver/laws/expression.h"
 #include "solver/laws/law_registry.h"
 #include "solver/simulate.h"
+#include "solver/steppers/dop853.h"
+#include "solver/steppers/dop853_fma.h"
 
 namespace ivv::detail {
 
@@ -147,9 +150,21 @@ ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptio
   return to_physical(run, sys, scene, k);
 }
 
+// Whether run_law has the AVX2 + FMA copy of solver/steppers/dop853_fma.h for this stepper, law
+// and scalar.
+template <template <class> class Stepper, class Law, class T>
+constexpr bool has_fma_clone() {
+  using System = ImpactSystem<Law, true, double>;
+  if constexpr (kHasFmaCopy<Law> && std::is_same_v<T, double>)
+    return std::is_same_v<Stepper<System>, Dop853Stepper<System>>;
+  else
+    return false;
+}
+
 // One impact of `law` with stepper `Stepper` on scalar T: the dashpot (or its absence) chosen
-// once here. A law that does not run on T (an expression law in the 50-digit reference) is a
-// failed result that says so, never a compile error.
+// once here, and the machine code (solver/steppers/machine_code.h) where there is a choice. A law
+// that does not run on T (an expression law in the 50-digit reference) is a failed result that says
+// so, never a compile error.
 template <template <class> class Stepper, class T = double, class Law>
 ImpactResult run_law(const Law& law, const Scene& scene, const IntegratorOptions& options,
                      const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
@@ -163,6 +178,10 @@ ImpactResult run_law(const Law& law, const Scene& scene, const IntegratorOptions
   } else if constexpr (Law::rate_dependent) {
     return run_typed<Stepper, Law, false, T>(law, scene, options, p, trajectory);
   } else {
+    if constexpr (has_fma_clone<Stepper, Law, T>()) {
+      if (machine_code_in_use(options.machine_code) == MachineCode::fastest)
+        return run_dop853_fma(law, scene, options, p, trajectory);
+    }
     return p.has_dashpot() ? run_typed<Stepper, Law, true, T>(law, scene, options, p, trajectory)
                            : run_typed<Stepper, Law, false, T>(law, scene, options, p, trajectory);
   }

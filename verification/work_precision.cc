@@ -1,6 +1,7 @@
 #include "verification/work_precision.h"
 
 #include "closed_forms/linear_model.h"
+#include "solver/steppers/machine_code.h"
 
 #include <algorithm>
 #include <chrono>
@@ -132,6 +133,7 @@ MachineInfo describe_machine() {
   m.logical_cores = static_cast<int>(std::thread::hardware_concurrency());
   m.compiler = compiler_name();
   m.build_type = std::string(IVV_BUILD_TYPE).empty() ? "unspecified" : IVV_BUILD_TYPE;
+  m.machine_code = machine_code_description(machine_code_in_use(MachineCode::fastest));
   return m;
 }
 

@@ -80,6 +80,9 @@ struct MachineInfo {
   int logical_cores = 0;   // std::thread::hardware_concurrency() (0 if unknown)
   std::string compiler;    // compiler name and __VERSION__
   std::string build_type;  // CMake build type the library was compiled with
+  // the machine code the hot loop runs (solver/steppers/machine_code.h): "x86-64-v3 (AVX2, FMA)"
+  // or "x86-64 baseline"
+  std::string machine_code;
 };
 MachineInfo describe_machine();
 

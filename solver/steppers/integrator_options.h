@@ -11,6 +11,7 @@
 #include <string>
 
 #include "solver/driver/event_locator.h"
+#include "solver/steppers/machine_code.h"
 
 namespace ivv {
 
@@ -44,6 +45,11 @@ struct IntegratorOptions {
   // (>= 1e-16) are measured against it, so 1e-26 leaves ten digits to spare.
   double reference_tolerance = 1e-26;
   LocatorOptions locator;
+  // The machine code of the run (solver/steppers/machine_code.h): fastest takes the AVX2 + FMA
+  // copy where the CPU has it and the run has one (dop853 with the elastoplastic or Hertz law),
+  // whose last bits differ from the baseline's within the stated error; baseline reproduces the
+  // x86-64 baseline bit for bit (as does IVV_MACHINE_CODE=baseline for the whole process).
+  MachineCode machine_code = MachineCode::fastest;
 
   // Default fixed step in tau for rk4: its global error ~ C h^4 with C = O(1) in the
   // normalised variables on the smooth phases, plus O(h^{5/2}) from the step at onset, where
