@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "scene/input_error.h"
+#include "solver/laws/energy_creating_hertz.h"
 #include "solver/laws/hertz.h"
 #include "verification/conformance_gtest.h"
 #include "verification/conformance_law.h"
@@ -97,21 +98,8 @@ TEST(Conformance, AWrongStiffnessIsCaughtByAutomaticDifferentiation) {
   EXPECT_GT(c.measured, 1e-3);  // 1 % of a stiffness of order k_ref
 }
 
-// An unloading curve above loading: F_unload = 1.1 F_load, which creates energy.
-struct EnergyCreating : HertzLaw {
-  template <class T>
-  T force(const Branch<T>& b, const T& z, const T& v) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::force(b, z, v);
-  }
-  template <class T>
-  T stiffness(const Branch<T>& b, const T& z, const T& v) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::stiffness(b, z, v);
-  }
-  template <class T>
-  T stored_energy(const Branch<T>& b, const T& z) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::stored_energy(b, z);
-  }
-};
+// An unloading curve above loading (solver/laws/energy_creating_hertz.h), which creates energy.
+using EnergyCreating = EnergyCreatingHertz;
 
 TEST(Conformance, UnloadingAboveLoadingIsCaught) {
   const auto law = law_under_test<EnergyCreating>(

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "solver/consistency.h"
+#include "solver/laws/energy_creating_hertz.h"
 #include "solver/simulate.h"
 #include "solver/simulate_law.h"
 
@@ -56,8 +57,9 @@ TEST(MachineCode, NamesItsCodes) {
 class FmaCopy : public ::testing::TestWithParam<LawKind> {};
 
 TEST_P(FmaCopy, AgreesWithTheBaselineWithinTheStatedErrors) {
-  if (machine_code_in_use(MachineCode::fastest) != MachineCode::fastest)
-    GTEST_SKIP() << "this CPU (or IVV_MACHINE_CODE) runs the baseline code only";
+  // without a copy (this CPU, or IVV_MACHINE_CODE=baseline) both requests run the same code:
+  // then the two runs are the same bit for bit
+  const bool copy = machine_code_in_use(MachineCode::fastest) == MachineCode::fastest;
   const SimulationRequest base_req = paper_request(GetParam(), MachineCode::baseline);
   const SimulationRequest fast_req = paper_request(GetParam(), MachineCode::fastest);
   std::vector<TrajectoryPoint> base_path, fast_path;
@@ -71,9 +73,9 @@ TEST_P(FmaCopy, AgreesWithTheBaselineWithinTheStatedErrors) {
     EXPECT_EQ(fast.events[i].kind, base.events[i].kind);
   const double stated = accumulated_error_bound(base.steps, base_req.options) +
                         accumulated_error_bound(fast.steps, fast_req.options);
-  EXPECT_LE(std::abs(fast.e - base.e), stated);
+  EXPECT_LE(std::abs(fast.e - base.e), copy ? stated : 0.0);
   // F_max in units of its own value, like e in units of v0
-  EXPECT_LE(std::abs(fast.F_max - base.F_max), stated * base.F_max);
+  EXPECT_LE(std::abs(fast.F_max - base.F_max), copy ? stated * base.F_max : 0.0);
   EXPECT_FALSE(fast_path.empty());
   // four samples a step in both (impact_driver.h): the same steps give the same count
   if (fast.steps == base.steps) {
@@ -82,21 +84,9 @@ TEST_P(FmaCopy, AgreesWithTheBaselineWithinTheStatedErrors) {
 }
 
 // A law derived from one that has a copy keeps its own members: the copy of the base law is not
-// run in its place. Here the unloading force is 1.1 times Hertz's, which returns more energy.
-struct StifferUnloadingHertz : HertzLaw {
-  template <class T>
-  T force(const Branch<T>& b, const T& z, const T& v) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::force(b, z, v);
-  }
-  template <class T>
-  T stiffness(const Branch<T>& b, const T& z, const T& v) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::stiffness(b, z, v);
-  }
-  template <class T>
-  T stored_energy(const Branch<T>& b, const T& z) const {
-    return (b.phase == Phase::unloading ? 1.1 : 1.0) * HertzLaw::stored_energy(b, z);
-  }
-};
+// run in its place. Here the unloading force is 1.1 times Hertz's, which returns more energy
+// (solver/laws/energy_creating_hertz.h).
+using StifferUnloadingHertz = EnergyCreatingHertz;
 
 TEST(FmaCopy, ALawDerivedFromACopiedLawRunsItsOwnMembers) {
   const SimulationRequest req = paper_request(LawKind::hertz, MachineCode::fastest);
