@@ -33,8 +33,12 @@
 #include <utility>
 #include <vector>
 
+// x86-64 only: elsewhere cpu_has_fma_clone() is false and this unit is one more baseline copy,
+// never called
+#if defined(__x86_64__)
 #pragma GCC push_options
 #pragma GCC target("avx2,fma")
+#endif
 
 #include "solver/simulate_impl.h"
 #include "solver/steppers/dop853.h"
@@ -76,4 +80,6 @@ ImpactResult run_dop853_fma(const HertzLaw& law, const Scene& scene,
 
 }  // namespace ivv::detail
 
+#if defined(__x86_64__)
 #pragma GCC pop_options
+#endif
