@@ -33,9 +33,11 @@
 #include <utility>
 #include <vector>
 
-// x86-64 only: elsewhere cpu_has_fma_clone() is false and this unit is one more baseline copy,
-// never called
-#if defined(__x86_64__)
+#include "solver/steppers/fma_copy.h"  // IVV_FMA_COPY, a macro only
+
+// Where IVV_FMA_COPY is 0 (not x86-64, unoptimised, or under AddressSanitizer: fma_copy.h)
+// cpu_has_fma_clone() is false and this unit is one more baseline copy, never called.
+#if IVV_FMA_COPY
 #pragma GCC push_options
 #pragma GCC target("avx2,fma")
 #endif
@@ -80,6 +82,6 @@ ImpactResult run_dop853_fma(const HertzLaw& law, const Scene& scene,
 
 }  // namespace ivv::detail
 
-#if defined(__x86_64__)
+#if IVV_FMA_COPY
 #pragma GCC pop_options
 #endif

@@ -1,5 +1,7 @@
 #include "solver/steppers/machine_code.h"
 
+#include "solver/steppers/fma_copy.h"
+
 #include <cstdlib>
 #include <string>
 
@@ -32,7 +34,7 @@ const EnvironmentChoice& environment_choice() {
 }  // namespace
 
 bool cpu_has_fma_clone() {
-#if defined(__x86_64__) && defined(__GNUC__)
+#if IVV_FMA_COPY
   static const bool has = [] {
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
