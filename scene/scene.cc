@@ -11,7 +11,11 @@
 
 namespace ivv {
 
-DerivedParameters derive(const Scene& s) {
+namespace {
+
+// derive()'s parameters of the two bodies, which depend on neither the velocity nor the dashpot:
+// R*, m*, E*, K_h and, with a yield strength, z_y, K_y, omega0, v_y. No dashpot (zeta 0, c inf).
+DerivedParameters derive_bodies(const Scene& s) {
   DerivedParameters p;
   p.effective_radius =
       s.target_radius ? s.radius * *s.target_radius / (s.radius + *s.target_radius) : s.radius;
@@ -31,13 +35,31 @@ DerivedParameters derive(const Scene& s) {
     p.omega0 = std::sqrt(p.K_y / m);                           // eq. 23
     p.v_yield = std::sqrt(4.0 * p.K_h * p.z_y * p.z_y * std::sqrt(p.z_y) / (5.0 * m));
   }
-  const double critical = std::sqrt(m * p.K_y);  // 2 c zeta (NaN without a yield strength)
+  return p;
+}
+
+// 2 c zeta = sqrt(m* K_y) [N s/m] (NaN without a yield strength).
+double critical_damping(const DerivedParameters& p) {
+  return std::sqrt(p.effective_mass * p.K_y);
+}
+
+// The dashpot of a damping ratio zeta > 0: c = sqrt(m* K_y)/(2 zeta).
+void set_damping_ratio(DerivedParameters& p, double critical, double zeta) {
+  p.zeta = zeta;
+  p.c = critical / (2.0 * p.zeta);
+}
+
+}  // namespace
+
+DerivedParameters derive(const Scene& s) {
+  DerivedParameters p = derive_bodies(s);
+  const double m = p.effective_mass;
+  const double critical = critical_damping(p);
   switch (s.damping.kind) {
     case Damping::Kind::none:
       break;
     case Damping::Kind::ratio:  // validate() requires a yield strength for it
-      p.zeta = s.damping.value;
-      p.c = critical / (2.0 * p.zeta);
+      set_damping_ratio(p, critical, s.damping.value);
       break;
     case Damping::Kind::coefficient:
       p.c = s.damping.value;
@@ -54,6 +76,18 @@ DerivedParameters derive(const Scene& s) {
       break;
   }
   p.zener_lambda = zener_lambda(m, p.K_h, s.velocity, p.c);
+  return p;
+}
+
+VelocityDampingDerivation::VelocityDampingDerivation(const Scene& base)
+    : bodies_(derive_bodies(base)),
+      critical_(critical_damping(bodies_)),
+      mass_stiffness_factor_(zener_mass_stiffness_factor(bodies_.effective_mass, bodies_.K_h)) {}
+
+DerivedParameters VelocityDampingDerivation::at(double velocity_factor, double zeta) const {
+  DerivedParameters p = bodies_;
+  if (zeta > 0) set_damping_ratio(p, critical_, zeta);
+  p.zener_lambda = zener_lambda_of_factors(mass_stiffness_factor_, velocity_factor, p.c);
   return p;
 }
 

@@ -143,6 +143,28 @@ inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 20;
 // Derived parameters of a valid scene (validate() first; this assumes validity).
 DerivedParameters derive(const Scene& scene);
 
+// derive() of many scenes that differ from one base scene only in the impact velocity and a
+// damping ratio (the points of a v0 x zeta sweep): what depends on neither (R*, m*, E*, K_h,
+// z_y, K_y, omega0, v_y, the critical 2 c zeta = sqrt(m* K_y) and Zener's m*^{3/5} K_h^{2/5}) is
+// derived once, so a point costs a division and two products instead of derive()'s square roots
+// and powers (~570 instructions a point of the 300 x 300 map, callgrind). Its parameters are
+// derive()'s to the bit: derive() is made of the same steps (scene_test.cc holds the two equal).
+class VelocityDampingDerivation {
+ public:
+  // `base`: a valid scene (validate()); its velocity and its damping are not used.
+  explicit VelocityDampingDerivation(const Scene& base);
+  // derive(s) for s = the base scene with velocity v0 and damping Damping::ratio(zeta) for
+  // zeta > 0, Damping::none() for zeta = 0 (a sweep's points: solver/sweep/sweep_grid.h).
+  // `velocity_factor` is zener_velocity_factor(v0) (scene/structure.h), which a caller with few
+  // velocities computes once each.
+  DerivedParameters at(double velocity_factor, double zeta) const;
+
+ private:
+  DerivedParameters bodies_;            // no dashpot, zener_lambda 0
+  double critical_ = 0.0;               // sqrt(m* K_y) = 2 c zeta [N s/m] (NaN without S_y)
+  double mass_stiffness_factor_ = 0.0;  // m*^{3/5} K_h^{2/5}
+};
+
 // Throws InputError("target.yield_strength", ...) for ScaleBasis::yield without a yield strength.
 Scales scales(const Scene& scene, const DerivedParameters& p, ScaleBasis basis);
 

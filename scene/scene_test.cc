@@ -4,10 +4,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <iterator>
+#include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/input_error.h"
@@ -29,6 +34,55 @@ TEST(DerivedParameters, PaperSceneMatchesHandArithmetic) {
   EXPECT_NEAR(p.K_y / (1.5 * p.K_h * std::sqrt(z_y)), 1.0, 1e-14);
   EXPECT_FALSE(p.has_dashpot());
   EXPECT_EQ(p.zeta, 0.0);
+}
+
+// Every derived parameter of `a` and `b` the same double, bit for bit (NaN for NaN where absent).
+::testing::AssertionResult same_bits(const DerivedParameters& a, const DerivedParameters& b) {
+  const std::pair<const char*, double DerivedParameters::*> fields[] = {
+      {"effective_radius", &DerivedParameters::effective_radius},
+      {"effective_mass", &DerivedParameters::effective_mass},
+      {"E_star", &DerivedParameters::E_star},
+      {"K_h", &DerivedParameters::K_h},
+      {"z_y", &DerivedParameters::z_y},
+      {"K_y", &DerivedParameters::K_y},
+      {"omega0", &DerivedParameters::omega0},
+      {"zeta", &DerivedParameters::zeta},
+      {"c", &DerivedParameters::c},
+      {"v_yield", &DerivedParameters::v_yield},
+      {"zener_lambda", &DerivedParameters::zener_lambda}};
+  static_assert(sizeof(DerivedParameters) == std::size(fields) * sizeof(double),
+                "a field of DerivedParameters is missing from this comparison");
+  for (const auto& [name, field] : fields)
+    if (std::bit_cast<std::uint64_t>(a.*field) != std::bit_cast<std::uint64_t>(b.*field))
+      return ::testing::AssertionFailure() << name << ": " << a.*field << " against " << b.*field;
+  return ::testing::AssertionSuccess();
+}
+
+// The derivation shared by the points of a v0 x zeta sweep gives derive()'s parameters to the
+// bit, at every velocity and damping ratio (none at zeta = 0), for the paper's half-space, a
+// scene without a yield strength (only zeta = 0 then: a ratio needs K_y), a free target sphere
+// and a rigid target.
+TEST(DerivedParameters, SharedDerivationOfVelocityAndDampingIsDerive) {
+  Scene no_yield = paper_scene();
+  no_yield.yield_strength.reset();
+  Scene sphere = paper_scene();
+  sphere.target_radius = 0.02;
+  sphere.target_mass = 1.5;
+  Scene rigid = paper_scene();
+  rigid.target_youngs_modulus = std::numeric_limits<double>::infinity();
+  for (const Scene& base : {paper_scene(), no_yield, sphere, rigid}) {
+    const VelocityDampingDerivation shared(base);
+    for (double v0 : {1e-6, 0.1, 0.7071067811865476, 1.0, 3.3, 10.0, 250.0}) {
+      for (double zeta : {0.0, 1e-3, 0.1, 1.0 / 3.0, 1.0, 50.0}) {
+        if (zeta > 0 && !base.yield_strength) continue;
+        Scene s = base;
+        s.velocity = v0;
+        s.damping = zeta > 0 ? Damping::ratio(zeta) : Damping::none();
+        EXPECT_TRUE(same_bits(shared.at(zener_velocity_factor(v0), zeta), derive(s)))
+            << base.name << " v0 " << v0 << " zeta " << zeta;
+      }
+    }
+  }
 }
 
 // The paper states that c = 11440 N s/m gives zeta = 0.1 (to the 3 digits it quotes).

@@ -253,13 +253,26 @@ std::string structure_formula(const Structure& s) {
   return "";
 }
 
-double zener_lambda(double m, double K_h, double v0, double c) {
+double zener_mass_stiffness_factor(double m, double K_h) {
+  return std::pow(m, 0.6) * std::pow(K_h, 0.4);
+}
+
+double zener_velocity_factor(double v0) {
+  return std::pow(v0, 0.2);
+}
+
+double zener_lambda_of_factors(double mass_stiffness, double velocity, double c) {
   if (std::isinf(c)) return 0.0;
-  return std::pow(m, 0.6) * std::pow(K_h, 0.4) * std::pow(v0, 0.2) / c;
+  return mass_stiffness * velocity / c;
+}
+
+double zener_lambda(double m, double K_h, double v0, double c) {
+  if (std::isinf(c)) return 0.0;  // before the powers: a run without a dashpot pays none
+  return zener_lambda_of_factors(zener_mass_stiffness_factor(m, K_h), zener_velocity_factor(v0), c);
 }
 
 double dashpot_for_zener_lambda(double m, double K_h, double v0, double lambda) {
-  return std::pow(m, 0.6) * std::pow(K_h, 0.4) * std::pow(v0, 0.2) / lambda;
+  return zener_mass_stiffness_factor(m, K_h) * zener_velocity_factor(v0) / lambda;
 }
 
 double zener_length(double m, double K_h, double v0) {

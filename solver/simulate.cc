@@ -208,8 +208,12 @@ ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req
   }
 }
 
-ValidatedRequest::ValidatedRequest(const SimulationRequest& req, Trusted)
-    : request_(&req), derived_(derive(req.scene)) {
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req, Trusted t)
+    : ValidatedRequest(req, derive(req.scene), t) {}
+
+ValidatedRequest::ValidatedRequest(const SimulationRequest& req, const DerivedParameters& derived,
+                                   Trusted)
+    : request_(&req), derived_(derived) {
   if (req.law == LawKind::expression) expression_ = detail::compile_expression_law(req, derived_);
 }
 

@@ -77,10 +77,15 @@ class ValidatedRequest {
   // point_request()): the grid's checks cover every point (v0 and zeta enter the derived
   // scales separately, and each is checked), so only the point's expression law is compiled.
   static ValidatedRequest grid_point(const SweepRequest& grid, const SimulationRequest& point);
+  // The same with the point's derived parameters given: `derived` = derive(point.scene), made
+  // from what the grid's points share (SweepPointRequests, solver/sweep/sweep_grid.h).
+  static ValidatedRequest grid_point(const SweepRequest& grid, const SimulationRequest& point,
+                                     const DerivedParameters& derived);
 
  private:
   struct Trusted {};
   ValidatedRequest(const SimulationRequest& request, Trusted);
+  ValidatedRequest(const SimulationRequest& request, const DerivedParameters& derived, Trusted);
   const SimulationRequest* request_;
   DerivedParameters derived_;
   std::shared_ptr<const CompiledExpressions> expression_;

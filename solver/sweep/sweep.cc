@@ -75,15 +75,17 @@ ImpactResult simulate_plate_point(const SimulationRequest& point) {
 }
 
 // Point `index` run with `point` (req.base, or a point of the same grid before) made its request
-// (assign_point_request); `inputs()` gives the point's PointInputs, for the message of a point
-// that throws.
+// (assign_point_request); validated with what the grid's points share (`shared`) when given, by
+// the point alone otherwise (one point: making the shared part would cost more than it saves).
+// `inputs()` gives the point's PointInputs, for the message of a point that throws.
 template <class Inputs>
-ImpactResult simulate_point(const SweepRequest& req, std::size_t index, SimulationRequest& point,
-                            const Inputs& inputs) {
+ImpactResult simulate_point(const SweepRequest& req, const SweepPointRequests* shared,
+                            std::size_t index, SimulationRequest& point, const Inputs& inputs) {
   try {
     assign_point_request(req, index, point);
     if (has_finite_plate(point.scene)) return simulate_plate_point(point);
-    return simulate(ValidatedRequest::grid_point(req, point));
+    return simulate(shared ? shared->validated(index, point)
+                           : ValidatedRequest::grid_point(req, point));
   } catch (const std::exception& e) {
     throw std::runtime_error(point_label(req, index, inputs()) + ": " + e.what());
   }
@@ -94,17 +96,18 @@ ImpactResult simulate_point(const SweepRequest& req, std::size_t index, Simulati
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
   const PointInputs in = point_inputs(req, index);
   SimulationRequest point = req.base;
-  return sweep_csv_row(in, simulate_point(req, index, point, [&] { return in; }));
+  return sweep_csv_row(in, simulate_point(req, nullptr, index, point, [&] { return in; }));
 }
 
 namespace {
 // Runs point `index` into the worker's batch: the request made in the worker's `point`, the
 // inputs copied from their text, the results formatted into the batch's buffer (no allocation
 // once it has grown).
-void run_sweep_point(const SweepRequest& req, const SweepInputColumns& inputs, std::size_t index,
-                     SimulationRequest& point, SweepRowBatch& rows) {
+void run_sweep_point(const SweepRequest& req, const SweepPointRequests& shared,
+                     const SweepInputColumns& inputs, std::size_t index, SimulationRequest& point,
+                     SweepRowBatch& rows) {
   const ImpactResult result =
-      simulate_point(req, index, point, [&] { return point_inputs(req, index); });
+      simulate_point(req, &shared, index, point, [&] { return point_inputs(req, index); });
   std::string& text = rows.begin_row(index);
   const std::size_t start = text.size();
   inputs.append(text, index);
@@ -115,6 +118,7 @@ void run_sweep_point(const SweepRequest& req, const SweepInputColumns& inputs, s
 std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   validate(req);
   std::vector<SweepPoint> points(point_count(req));
+  const SweepPointRequests shared(req);
   ParallelOptions opt;
   opt.threads = req.threads;
   opt.progress = req.progress;
@@ -123,7 +127,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
     parallel_for(points.size(), opt, [&](std::size_t i) {
       PointInputs in = point_inputs(req, i);
       SimulationRequest point = req.base;
-      points[i].result = simulate_point(req, i, point, [&] { return in; });
+      points[i].result = simulate_point(req, &shared, i, point, [&] { return in; });
       points[i].v0 = in.v0;
       points[i].zeta = in.zeta;
       points[i].axes = std::move(in.axes);
@@ -145,6 +149,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
   // instructions than one in malloc and free of rows made on one thread and written by the other).
   std::mutex progress_mutex;
   const SweepInputColumns inputs(req);
+  const SweepPointRequests shared(req);
   ParallelOptions po;
   po.threads = worker_count(sink.total(), req.threads);
   const WorkerClock::Clock::time_point origin = WorkerClock::Clock::now();
@@ -163,7 +168,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         // take() and deliver_and_take() block until work is available or none is left
         if (batch.empty()) return;
         try {
-          for (const std::size_t i : batch) run_sweep_point(req, inputs, i, point, rows);
+          for (const std::size_t i : batch) run_sweep_point(req, shared, inputs, i, point, rows);
         } catch (...) {
           sink.request_stop();  // the other workers take no more: the sweep ends
           sink.deliver(rows);   // the points done before it stay in the journal

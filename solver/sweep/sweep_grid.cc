@@ -216,4 +216,30 @@ ValidatedRequest ValidatedRequest::grid_point(const SweepRequest& /*grid: valida
   return ValidatedRequest(point, Trusted{});
 }
 
+ValidatedRequest ValidatedRequest::grid_point(const SweepRequest& /*grid: validated*/,
+                                              const SimulationRequest& point,
+                                              const DerivedParameters& derived) {
+  return ValidatedRequest(point, derived, Trusted{});
+}
+
+SweepPointRequests::SweepPointRequests(const SweepRequest& req) : request_(&req) {
+  if (!req.axes.empty() || req.scene_dashpot || has_finite_plate(req.base.scene)) return;
+  shared_.emplace(req.base.scene);
+  velocity_factors_.reserve(req.velocities.size());
+  for (double v0 : req.velocities) velocity_factors_.push_back(zener_velocity_factor(v0));
+}
+
+DerivedParameters SweepPointRequests::derived(std::size_t index,
+                                              const SimulationRequest& point) const {
+  if (!shared_) return derive(point.scene);
+  const GridPosition at = grid_position(*request_, index);
+  return shared_->at(velocity_factors_[at.velocity], request_->zetas[at.zeta]);
+}
+
+ValidatedRequest SweepPointRequests::validated(std::size_t index,
+                                               const SimulationRequest& point) const {
+  if (!shared_) return ValidatedRequest::grid_point(*request_, point);
+  return ValidatedRequest::grid_point(*request_, point, derived(index, point));
+}
+
 }  // namespace ivv

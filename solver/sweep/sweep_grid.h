@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,30 @@ SimulationRequest point_request(const SweepRequest& request, std::size_t index);
 // request for all its points instead of copying the base request a point (the copy and its
 // destruction were ~300 instructions of a map point). With scene axes the base is copied.
 void assign_point_request(const SweepRequest& request, std::size_t index, SimulationRequest& r);
+
+// The validated request of each point of a grid, with what its points share made once for the
+// grid. On a v0 x zeta grid (no scene axes, the zetas of the grid, no finite plate) a point's
+// derived parameters come from one VelocityDampingDerivation of the base scene (scene/scene.h)
+// and v0^{1/5} kept per velocity, instead of derive() of the point's scene (its square roots and
+// three powers were ~570 instructions of a point of the 300 x 300 map, callgrind); on any other
+// grid each point's scene is derived (ValidatedRequest::grid_point). The same parameters either
+// way, to the bit (sweep_test.cc). Refers to `request`, a grid validate() accepted, which must
+// outlive it.
+class SweepPointRequests {
+ public:
+  explicit SweepPointRequests(const SweepRequest& request);
+  // derive(point.scene) for `point` = point `index`'s request (assign_point_request made it).
+  DerivedParameters derived(std::size_t index, const SimulationRequest& point) const;
+  // Point `index`'s validated request, referring to `point` (which must outlive it).
+  ValidatedRequest validated(std::size_t index, const SimulationRequest& point) const;
+  // Whether the grid's points share the base scene's derivation (a v0 x zeta grid, above).
+  bool shares_derivation() const { return shared_.has_value(); }
+
+ private:
+  const SweepRequest* request_;
+  std::optional<VelocityDampingDerivation> shared_;
+  std::vector<double> velocity_factors_;  // zener_velocity_factor of each velocity
+};
 
 // The inputs of point `index` as its CSV row gives them: v0, zeta (the scene dashpot's derived
 // zeta when request.scene_dashpot), then each scene axis's value.

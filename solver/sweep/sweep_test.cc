@@ -9,9 +9,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -457,6 +459,46 @@ SweepRequest paper_grid_with_axes() {
   SweepRequest req = paper_grid(2, 2);  // v0 0.1, 10; zeta 0, 1
   req.axes = {{"impactor.mass", {0.1, 0.5, 2.0}}, {"target.yield_strength", {1e8, 3e8}}};
   return req;
+}
+
+// Every derived parameter of `a` and `b` the same double, bit for bit (NaN for NaN where absent).
+bool same_bits(const DerivedParameters& a, const DerivedParameters& b) {
+  for (auto field :
+       {&DerivedParameters::effective_radius, &DerivedParameters::effective_mass,
+        &DerivedParameters::E_star, &DerivedParameters::K_h, &DerivedParameters::z_y,
+        &DerivedParameters::K_y, &DerivedParameters::omega0, &DerivedParameters::zeta,
+        &DerivedParameters::c, &DerivedParameters::v_yield, &DerivedParameters::zener_lambda})
+    if (std::bit_cast<std::uint64_t>(a.*field) != std::bit_cast<std::uint64_t>(b.*field))
+      return false;
+  return true;
+}
+
+// The derived parameters a point gets from what the grid's points share are derive() of the
+// point's own scene, bit for bit, at every point of a v0 x zeta grid (zeta 0 included: no
+// dashpot) whose base scene carries a dashpot of its own (replaced at each point); grids that
+// change the scene point by point (scene axes, the scene's own dashpot) derive each point's scene.
+TEST(SweepGrid, SharedDerivationGivesEachPointsDeriveToTheBit) {
+  SweepRequest grid = paper_grid(9, 7);
+  grid.base.scene.damping = Damping::coefficient(500.0);
+  grid.base.scene.velocity = 42.0;
+  SweepRequest own = paper_grid(4, 1);
+  own.base.scene.damping = Damping::zener(0.3);
+  own.zetas.clear();
+  own.scene_dashpot = true;
+  const SweepRequest axes = paper_grid_with_axes();
+  EXPECT_TRUE(SweepPointRequests(grid).shares_derivation());
+  EXPECT_FALSE(SweepPointRequests(own).shares_derivation());
+  EXPECT_FALSE(SweepPointRequests(axes).shares_derivation());
+  for (const SweepRequest* req : std::initializer_list<const SweepRequest*>{&grid, &own, &axes}) {
+    const SweepPointRequests shared(*req);
+    SimulationRequest point = req->base;
+    for (std::size_t i = 0; i < point_count(*req); ++i) {
+      assign_point_request(*req, i, point);
+      const DerivedParameters want = derive(point_request(*req, i).scene);
+      EXPECT_TRUE(same_bits(shared.derived(i, point), want)) << i;
+      EXPECT_TRUE(same_bits(shared.validated(i, point).derived(), want)) << i;
+    }
+  }
 }
 
 TEST(SweepAxes, PointsAreRowMajorWithTheLastAxisFastest) {
