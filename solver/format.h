@@ -15,10 +15,11 @@
 // arithmetic), about 4x faster than glibc's printf at 12-17 digits; a sweep prints 12 numbers a
 // point and was bound by printf (callgrind: glibc's __printf_fp_l and hack_digit were 14 % of
 // a 300 x 300 sweep's instructions). general() with p <= 15 goes faster still: it rounds in
-// double arithmetic with an exact residual and leaves only values next to a rounding tie (and
-// zero, the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars (format.cc; ~330 against
-// ~715 instructions a 12-digit number). The append_* forms write into a caller's buffer and
-// allocate nothing once its capacity suffices.
+// double arithmetic with an exact residual, in one copy for each precision, and leaves only values
+// next to a rounding tie (and the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars
+// (format.cc; ~190 against ~715 instructions a 12-digit number of a sweep's rows, callgrind;
+// zero is written directly). The append_* forms write into a caller's buffer and allocate
+// nothing once its capacity suffices.
 #pragma once
 
 #include <cstddef>
@@ -36,6 +37,10 @@ inline constexpr std::size_t kMaxNumberChars = 32;
 char* write_general(char* first, double v, int precision);
 // Writes shortest(v) at `first` (room for kMaxNumberChars) and returns the end.
 char* write_shortest(char* first, double v);
+// Characters the longest integer takes: "-9223372036854775808" is 20.
+inline constexpr std::size_t kMaxIntegerChars = 20;
+// Writes v in decimal at `first` (room for kMaxIntegerChars) and returns the end.
+char* write_integer(char* first, long long v);
 
 void append_general(std::string& out, double v, int precision);
 void append_shortest(std::string& out, double v);

@@ -112,12 +112,9 @@ void check_closed_form(ImpactResult& r, const Scene& scene, const DerivedParamet
   }
 }
 
-double integrator_error_factor(IntegratorKind k) {
-  return traits(k).implicit ? kAutoErrorFactorImplicit : kAutoErrorFactorExplicit;
-}
-
 double integrated_estimate(IntegratorKind k, const IntegratorOptions& opt) {
-  if (traits(k).fixed_step) {
+  const IntegratorTraits& t = traits(k);  // looked up once: decide_model runs every impact
+  if (t.fixed_step) {
     const double h = opt.fixed_dt();
     // The step that starts at onset integrates F ~ z^{3/2} ~ tau^{3/2}, which is not smooth
     // there: its local error is O(h^{5/2}), not the smooth phases' C h^4 (h^4 = 1e-12 was
@@ -126,8 +123,8 @@ double integrated_estimate(IntegratorKind k, const IntegratorOptions& opt) {
     // Rk4.MeetsItsStatedError (integrators_test.cc).
     return h * h * std::sqrt(h);
   }
-  if (traits(k).reference) return opt.reference_tolerance;
-  return integrator_error_factor(k) * opt.rtol;
+  if (t.reference) return opt.reference_tolerance;
+  return (t.implicit ? kAutoErrorFactorImplicit : kAutoErrorFactorExplicit) * opt.rtol;
 }
 
 struct LinearEstimate {

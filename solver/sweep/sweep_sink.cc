@@ -30,6 +30,17 @@ std::uint64_t fnv1a(std::string_view s, std::uint64_t h = 0xcbf29ce484222325ULL)
 
 // A journal line's head, "index 0123456789abcdef ", as printf's "%zu %016llx " wrote it.
 constexpr std::size_t kChecksumDigits = 16;
+// "000102...feff": the two lower-case hexadecimal digits of every byte (the checksum's sixteen
+// digits written a byte at a time: a digit at a time was ~100 instructions of a row's journal
+// line).
+constexpr std::array<char, 512> kHexBytes = [] {
+  std::array<char, 512> t{};
+  for (int b = 0; b < 256; ++b) {
+    t[2 * b] = "0123456789abcdef"[b >> 4];
+    t[2 * b + 1] = "0123456789abcdef"[b & 0xf];
+  }
+  return t;
+}();
 
 // One journal line "index checksum row" (row without its newline): the index and the row
 // (newline restored) when the index is below `total` and the checksum matches; nullopt for a
@@ -99,8 +110,9 @@ void SweepRowBatch::end_row(const SweepRowFacts& facts) {
   char head[48];
   char* end = std::to_chars(head, head + 24, e.index).ptr;
   *end++ = ' ';
-  for (std::size_t k = 0; k < kChecksumDigits; ++k)
-    *end++ = "0123456789abcdef"[(sum >> (4 * (kChecksumDigits - 1 - k))) & 0xf];
+  static_assert(2 * sizeof sum == kChecksumDigits);
+  for (int shift = 56; shift >= 0; shift -= 8, end += 2)  // a byte, two digits, at a time
+    std::memcpy(end, kHexBytes.data() + 2 * ((sum >> shift) & 0xff), 2);
   *end++ = ' ';
   e.line_begin = journal_.size();
   journal_.append(head, end);
