@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "solver/format.h"
 #include "solver/simulate.h"
@@ -64,6 +65,51 @@ INSTANTIATE_TEST_SUITE_P(DampedPaperScenes, CheaperChoice,
                                            DampedScene{1.0, 8.0}, DampedScene{1.0, 16.0},
                                            DampedScene{0.3, 16.0}, DampedScene{1.0, 100.0},
                                            DampedScene{1.0, 0.1}));
+
+// capture.h criterion 1 at the estimated z_m as the cost model states it: the elastoplastic
+// unloading slope at the permanent set, 1.5 K_h sqrt(z_f), overdamped, K_f m >= 4 c^2, z_f > 0.
+bool written_early_capture(const DerivedParameters& p, double z_m) {
+  if (!p.has_yield() || !(z_m > p.z_y)) return false;
+  const double s = z_m * std::sqrt(z_m) - p.z_y * std::sqrt(p.z_y) - p.K_y / p.K_h * (z_m - p.z_y);
+  const double z_f = s > 0 ? std::cbrt(s * s) : 0.0;
+  return z_f > 0 && 1.5 * p.K_h * std::sqrt(z_f) * p.effective_mass >= 4.0 * p.c * p.c;
+}
+
+// The cost model decides early capture without the cube root where the answer is clear, and by
+// the written form near the boundary: the same decision on a grid of v0 x zeta and at points
+// approaching each v0's boundary in zeta (found by bisection to adjacent doubles) from both sides,
+// from 1e-6 down to a few ulps away.
+TEST(IntegratorChoice, EarlyCaptureWithoutTheCubeRootIsTheWrittenDecision) {
+  int boundaries = 0;
+  for (double v0 : {0.05, 0.3, 1.0, 5.0, 20.0}) {
+    auto decisions = [v0](double zeta) {
+      Scene s = paper_scene();
+      s.velocity = v0;
+      s.damping = Damping::ratio(zeta);
+      const DerivedParameters p = derive(s);
+      const IntegratorCosts k = estimate_integrator_costs(s, p, LawKind::elastoplastic, 1e-8);
+      return std::pair{k.early_capture, written_early_capture(p, k.z_max)};
+    };
+    for (double zeta = 1e-3; zeta < 1e3; zeta *= 1.07) {
+      const auto [model, written] = decisions(zeta);
+      EXPECT_EQ(model, written) << "v0 " << v0 << " zeta " << zeta;
+      if (written == decisions(zeta * 1.07).second) continue;
+      double lo = zeta, hi = zeta * 1.07;  // a boundary between: bisected to adjacent doubles
+      while (std::nextafter(lo, hi) < hi) {
+        const double mid = lo + 0.5 * (hi - lo);
+        if (!(mid > lo && mid < hi)) break;
+        (decisions(mid).second == decisions(lo).second ? lo : hi) = mid;
+      }
+      ++boundaries;
+      for (double d = 1e-6; d > 1e-17; d /= 10)
+        for (double z : {hi * (1 + d), lo * (1 - d), hi, lo}) {
+          const auto [near_model, near_written] = decisions(z);
+          EXPECT_EQ(near_model, near_written) << "v0 " << v0 << " zeta " << z << " (boundary)";
+        }
+    }
+  }
+  EXPECT_GE(boundaries, 3);  // the boundary lies inside the range at most of these v0
+}
 
 TEST(IntegratorChoice, HeavilyDampedFastImpactIsExplicit) {
   for (double zeta : {8.0, 16.0})
