@@ -141,12 +141,13 @@ std::array<LaneStart, kDop853Lanes> paper_impact_lanes() {
 // them.
 constexpr int kLaneSteps = 3;
 
-// The four paper lanes, kLaneSteps dop853 steps each: in AVX2 lanes (one call of Dop853Lanes::step
-// a step) or four scalar dop853 steppers of the same unit, one after another. Counters per
+// The four paper lanes, kLaneSteps dop853 steps each: in AVX2 lanes (in lockstep, a call of
+// Dop853Lanes::step a step, or free, each lane beginning its next step as soon as its last is
+// complete) or four scalar dop853 steppers of the same unit, one after another. Counters per
 // lane-step: the time (lane_step), and for the lanes their use (useful attempts / computed).
-enum class LaneStepping { avx2_lanes, scalar };
+enum class LaneStepping { avx2_lockstep, avx2_free, scalar };
 void paper_lanes(benchmark::State& state, LaneStepping stepping) {
-  const bool in_lanes = stepping == LaneStepping::avx2_lanes;
+  const bool in_lanes = stepping != LaneStepping::scalar;
   if (!dop853_lanes_runnable()) {
     state.SkipWithError("dop853 in lanes: this CPU has no AVX2 and FMA");
     return;
@@ -154,7 +155,11 @@ void paper_lanes(benchmark::State& state, LaneStepping stepping) {
   const std::array<LaneStart, kDop853Lanes> starts = paper_impact_lanes();
   IntegratorOptions opt;
   opt.rtol = opt.atol = 1e-8;
-  const LaneRunOptions run{.steps = kLaneSteps, .dense_samples = false};
+  const LaneRunOptions run{.steps = kLaneSteps,
+                           .dense_samples = false,
+                           .schedule = stepping == LaneStepping::avx2_free
+                                           ? LaneSchedule::free
+                                           : LaneSchedule::lockstep};
   double use = 1;
   long steps = 0;
   for (auto _ : state) {
@@ -186,7 +191,10 @@ void paper_lanes(benchmark::State& state, LaneStepping stepping) {
 void register_all() {
   register_plate();
   // the SIMD-lanes lever: 4 paper states a dop853 step each, in AVX2 lanes against 4 scalar steps
-  benchmark::RegisterBenchmark("lanes/dop853/avx2-lanes", paper_lanes, LaneStepping::avx2_lanes)
+  benchmark::RegisterBenchmark("lanes/dop853/avx2-lockstep", paper_lanes,
+                               LaneStepping::avx2_lockstep)
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("lanes/dop853/avx2-free", paper_lanes, LaneStepping::avx2_free)
       ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("lanes/dop853/scalar", paper_lanes, LaneStepping::scalar)
       ->Unit(benchmark::kMicrosecond);

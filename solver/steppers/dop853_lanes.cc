@@ -132,19 +132,10 @@ void report_lane(LaneRunReport& r, const System& sys, const Lanes& lanes, std::s
   }
 }
 
-[[gnu::flatten]] LanesRunReport run_lanes(const std::array<LaneStart, kDop853Lanes>& starts,
-                                          const IntegratorOptions& options,
-                                          const LaneRunOptions& run) {
-  std::array<System, kDop853Lanes> systems;
-  Lanes lanes(options);
-  LanesRunReport out;
-  for (std::size_t i = 0; i < kDop853Lanes; ++i) {
-    systems[i] = local_system(starts[i].system);
-    systems[i].rhs_evaluations = 0;
-    lanes.start(i, systems[i], starts[i].tau, starts[i].x);
-    lanes.propose_step(i, starts[i].h);
-    out.lanes[i].t1_each.reserve(static_cast<std::size_t>(run.steps));
-  }
+// run.steps calls of Dop853Lanes::step(); a lane that fails is reported and stopped.
+[[gnu::always_inline]] inline void run_lockstep(Lanes& lanes,
+                                                const std::array<System, kDop853Lanes>& systems,
+                                                const LaneRunOptions& run, LanesRunReport& out) {
   std::array<bool, kDop853Lanes> reported{};
   for (int s = 0; s < run.steps; ++s) {
     const std::array<StepResult, kDop853Lanes> results = lanes.step();
@@ -162,6 +153,58 @@ void report_lane(LaneRunReport& r, const System& sys, const Lanes& lanes, std::s
   }
   for (std::size_t i = 0; i < kDop853Lanes; ++i)
     if (!reported[i]) report_lane(out.lanes[i], systems[i], lanes, i, run);
+}
+
+// Dop853Lanes::attempt() until every lane has taken run.steps steps or failed: each lane is
+// reported when it is done and then stopped (it idles while the others finish).
+[[gnu::always_inline]] inline void run_free(Lanes& lanes,
+                                            const std::array<System, kDop853Lanes>& systems,
+                                            const LaneRunOptions& run, LanesRunReport& out) {
+  std::size_t left = kDop853Lanes;
+  std::array<bool, kDop853Lanes> reported{};
+  for (std::size_t i = 0; i < kDop853Lanes; ++i) {
+    if (run.steps > 0) continue;
+    report_lane(out.lanes[i], systems[i], lanes, i, run);
+    reported[i] = true;
+    --left;
+  }
+  while (left > 0) {
+    const std::array<LaneAttempt, kDop853Lanes> attempts = lanes.attempt();
+    for (std::size_t i = 0; i < kDop853Lanes; ++i) {
+      const LaneAttempt::Kind kind = attempts[i].kind;
+      if (reported[i] || (kind != LaneAttempt::Kind::accepted && kind != LaneAttempt::Kind::failed))
+        continue;
+      LaneRunReport& r = out.lanes[i];
+      r.result = lanes.step_result(i);
+      r.t1_each.push_back(lanes.t1(i));
+      if (r.result.ok && lanes.steps(i) < run.steps) continue;
+      LaneRunOptions at_end = run;
+      at_end.dense_samples = run.dense_samples && r.result.ok;
+      report_lane(r, systems[i], lanes, i, at_end);
+      reported[i] = true;
+      lanes.stop(i);
+      --left;
+    }
+  }
+}
+
+[[gnu::flatten]] LanesRunReport run_lanes(const std::array<LaneStart, kDop853Lanes>& starts,
+                                          const IntegratorOptions& options,
+                                          const LaneRunOptions& run) {
+  std::array<System, kDop853Lanes> systems;
+  Lanes lanes(options);
+  LanesRunReport out;
+  for (std::size_t i = 0; i < kDop853Lanes; ++i) {
+    systems[i] = local_system(starts[i].system);
+    systems[i].rhs_evaluations = 0;
+    lanes.start(i, systems[i], starts[i].tau, starts[i].x);
+    lanes.propose_step(i, starts[i].h);
+    out.lanes[i].t1_each.reserve(static_cast<std::size_t>(run.steps));
+  }
+  if (run.schedule == LaneSchedule::lockstep)
+    run_lockstep(lanes, systems, run, out);
+  else
+    run_free(lanes, systems, run, out);
   out.useful_attempts = lanes.counts().useful_attempts;
   out.lane_attempts = lanes.counts().lane_attempts;
   return out;

@@ -251,6 +251,10 @@ class Dop853Lanes {
   state_type x0(std::size_t i) const { return lane(x0_, i); }
   state_type x1(std::size_t i) const { return lane(x1_, i); }
   state_type f1(std::size_t i) const { return lane(k_[12], i); }
+  // What lane i's last complete step returned (Dop853Stepper::step's StepResult).
+  StepResult step_result(std::size_t i) const {
+    return failed_[i] ? failure(i) : StepResult::success();
+  }
   // ||err|| of lane i's last attempt (the controller's input)
   T last_error_norm(std::size_t i) const { return norm_[i]; }
   const LaneCounts& counts() const { return counts_; }

@@ -39,9 +39,15 @@ struct LaneStart {
   double h = 0;  // the step to try first (Dop853Stepper::propose_step)
 };
 
+// How the lanes are driven: Dop853Lanes::step() (every lane's step complete before any begins
+// its next: a lane done early waits) or attempt() (a lane begins its next step as soon as its
+// last is complete, as a driver in lanes would; a lane done with its steps then idles).
+enum class LaneSchedule { lockstep, free };
+
 struct LaneRunOptions {
   int steps = 1;              // steps per lane (a lane that fails stops there)
   bool dense_samples = true;  // interpolate the last step at theta = 1/4, 1/2, 3/4
+  LaneSchedule schedule = LaneSchedule::lockstep;  // lanes only
 };
 
 // What the steps of one lane left, as the scalar stepper's accessors give it.

@@ -64,14 +64,21 @@ IntegratorOptions paper_options() {
   return opt;
 }
 
+// Both schedules (lanes in lockstep, or each lane on its own) against the scalar steps.
 void compare_lanes_with_scalar(const std::array<LaneStart, kDop853Lanes>& starts,
-                               const LaneRunOptions& run) {
+                               const LaneRunOptions& run, const std::string& where = "") {
   const IntegratorOptions opt = paper_options();
-  const LanesRunReport lanes = dop853_run_lanes(starts, opt, run);
-  for (std::size_t i = 0; i < kDop853Lanes; ++i) {
-    const LaneRunReport scalar = dop853_run_scalar(starts[i], opt, run);
-    expect_lane_is_scalar(lanes.lanes[i], scalar, "lane " + std::to_string(i),
-                          run.dense_samples && scalar.result.ok);
+  for (const LaneSchedule schedule : {LaneSchedule::lockstep, LaneSchedule::free}) {
+    LaneRunOptions scheduled = run;
+    scheduled.schedule = schedule;
+    const LanesRunReport lanes = dop853_run_lanes(starts, opt, scheduled);
+    for (std::size_t i = 0; i < kDop853Lanes; ++i) {
+      const LaneRunReport scalar = dop853_run_scalar(starts[i], opt, run);
+      expect_lane_is_scalar(lanes.lanes[i], scalar,
+                            where + "lane " + std::to_string(i) +
+                                (schedule == LaneSchedule::free ? " (free)" : " (lockstep)"),
+                            run.dense_samples && scalar.result.ok);
+    }
   }
 }
 
@@ -134,13 +141,9 @@ TEST(Dop853Lanes, RandomLanesMatchTheScalarStepBitForBit) {
       s = paper_lane(v0, zeta, at);
     }
     const LaneRunOptions run{.steps = 3, .dense_samples = true};
-    const IntegratorOptions opt = paper_options();
-    const LanesRunReport lanes = dop853_run_lanes(starts, opt, run);
-    for (std::size_t i = 0; i < kDop853Lanes; ++i) {
-      const LaneRunReport scalar = dop853_run_scalar(starts[i], opt, run);
-      expect_lane_is_scalar(lanes.lanes[i], scalar,
-                            "batch " + std::to_string(batch) + " lane " + std::to_string(i),
-                            scalar.result.ok);
+    compare_lanes_with_scalar(starts, run, "batch " + std::to_string(batch) + " ");
+    for (const LaneStart& start : starts) {
+      const LaneRunReport scalar = dop853_run_scalar(start, paper_options(), run);
       // more than 12 evaluations per step beyond start: some attempt was rejected
       if (scalar.rhs_evaluations > 1 + 12 * scalar.steps) ++rejected_first_steps;
     }
@@ -164,12 +167,9 @@ TEST(Dop853Lanes, AFailedLaneFailsAsTheScalarStepAndLeavesTheOthersAlone) {
   EXPECT_FALSE(lanes.lanes[1].result.ok);
   EXPECT_EQ(lanes.lanes[1].result.code, StepFailure::step_underflow);
   EXPECT_EQ(lanes.lanes[1].steps, 0);
-  for (std::size_t i = 0; i < kDop853Lanes; ++i) {
-    const LaneRunReport scalar = dop853_run_scalar(starts[i], paper_options(), {.steps = 3});
-    expect_lane_is_scalar(lanes.lanes[i], scalar, "lane " + std::to_string(i), i != 1);
-  }
   // the failing lane's ~20 attempts were computed in all four lanes
   EXPECT_GT(lanes.lane_attempts, lanes.useful_attempts);
+  compare_lanes_with_scalar(starts, {.steps = 3, .dense_samples = true});
 }
 
 // The law's force in lanes (elastoplastic.h: force_lanes) against force() lane by lane, here in
