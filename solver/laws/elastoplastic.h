@@ -79,6 +79,58 @@ struct ElastoplasticLaw {
     const T& B = b.sqrt_z_perm;
     return K_h * ((z - b.z_max) + b.unloading_span) * (z + A * B + B * B) / (A + B);
   }
+  // The same force in the lanes of a SIMD vector: one impact per lane, each with its own law
+  // parameters and branch (solver/steppers/dop853_lanes.h runs L impacts' steps at once).
+  // `Lanes` is the lane arithmetic: Lanes::vector (L doubles with +, -, *, /, comparisons),
+  // Lanes::mask (what a comparison of two vectors gives), Lanes::sqrt, Lanes::abs (|v| by the
+  // sign bit, as fabs) and Lanes::select(mask, where_true, where_false). Every lane evaluates the
+  // three formulas of force() above, written exactly as there, and keeps the one of its branch:
+  //   loading, segment 0, and the tension side (unloading, z <= 0):
+  //        K_h z |z|^{1/2} + offset     [N]   offset = hertz_offset unloading, 0 loading
+  //   loading, segment 1:                K_y (z - z_y) + K_h z_y^{3/2}
+  //   unloading, z > 0:                  K_h ((z - z_m) + (z_m - z_f)) (z + A B + B^2) / (A + B)
+  // so each lane's value is force()'s to the last bit where the compiler treats the two alike
+  // (the offset 0 of a loading lane adds nothing: K_h z^{3/2} + 0 rounds as K_h z^{3/2}; a
+  // lane whose formula is not taken may compute NaN, which select() drops).
+  template <class Lanes>
+  struct LaneBranches {
+    using V = typename Lanes::vector;
+    V K_h{}, K_y{}, z_y{};        // [N/m^1.5], [N/m], [m]
+    V yield_force{};              // K_h z_y^{3/2} [N], as yield_force()
+    V hertz_offset{};             // the branch's hertz_offset where unloading, 0 where loading [N]
+    V z_max{}, unloading_span{};  // [m]
+    V sqrt_z_perm{};              // [m^0.5]
+    typename Lanes::mask plastic{};    // loading, segment 1
+    typename Lanes::mask unloading{};  // phase unloading
+
+    // Lane i takes `law` on branch `b`.
+    void set_lane(std::size_t i, const ElastoplasticLaw& law, const History<double>& b) {
+      const bool unload = b.phase == Phase::unloading;
+      K_h[i] = law.K_h;
+      K_y[i] = law.K_y;
+      z_y[i] = law.z_y;
+      yield_force[i] = law.yield_force();
+      hertz_offset[i] = unload ? b.hertz_offset : 0.0;
+      z_max[i] = b.z_max;
+      unloading_span[i] = b.unloading_span;
+      sqrt_z_perm[i] = b.sqrt_z_perm;
+      plastic[i] = !unload && b.segment == 1 ? -1 : 0;  // a mask lane is all ones where true
+      unloading[i] = unload ? -1 : 0;
+    }
+  };
+  template <class Lanes>
+  static typename Lanes::vector force_lanes(const LaneBranches<Lanes>& c,
+                                            const typename Lanes::vector& z) {
+    using V = typename Lanes::vector;
+    const V hertz = c.K_h * (z * Lanes::sqrt(Lanes::abs(z))) + c.hertz_offset;
+    const V plastic = c.K_y * (z - c.z_y) + c.yield_force;
+    const V A = Lanes::sqrt(z);
+    const V& B = c.sqrt_z_perm;
+    const V unload = c.K_h * ((z - c.z_max) + c.unloading_span) * (z + A * B + B * B) / (A + B);
+    const V loading = Lanes::select(c.plastic, plastic, hertz);
+    return Lanes::select(c.unloading & (z > V{}), unload, loading);
+  }
+
   template <class T>
   T stiffness(const History<T>& b, const T& z, const T&) const {
     using std::abs;

@@ -7,23 +7,31 @@ free of VEX-encoded instructions, except the entry points run_dop853_fma, which 
 where the CPU has AVX2 and FMA. A weak function with AVX2 code would be one of two copies of the
 same name: the linker keeps either, and the baseline callers on a CPU without AVX2 would fault.
 
-Usage: check_clone_symbols.py BUILD_DIR   (finds dop853_fma.cc.o below it; exit 1 on a finding)
+The same rule holds for dop853 in lanes (solver/steppers/dop853_lanes.cc), whose entry points are
+baseline code that checks the CPU before calling into the unit: there no exported function may
+have VEX code, and some function of the unit (a local one) must, or the unit was not compiled for
+AVX2.
+
+Usage: check_clone_symbols.py BUILD_DIR [OBJECT]   (OBJECT: dop853_fma.cc.o by default, found
+below BUILD_DIR; exit 1 on a finding)
 """
 import pathlib
 import re
 import subprocess
 import sys
 
-ENTRY = "run_dop853_fma"
+# the exported functions allowed AVX code, per object: the FMA copy's entry points; none in lanes
+ENTRIES = {"dop853_fma.cc.o": "run_dop853_fma", "dop853_lanes.cc.o": None}
 
 
-def exported_functions(obj):
+def exported_functions(obj, kinds="TWiu"):
+    """global text, weak, indirect, unique by default; kinds="t" for the unit's local functions"""
     out = subprocess.run(["nm", "--defined-only", str(obj)], capture_output=True, text=True,
                          check=True).stdout
     names = {}
     for line in out.splitlines():
         parts = line.split()
-        if len(parts) == 3 and parts[1] in "TWiu":  # global text, weak, indirect, unique
+        if len(parts) == 3 and parts[1] in kinds:
             names[parts[2]] = parts[1]
     return names
 
@@ -50,21 +58,36 @@ def first_vex_instruction(obj, names):
 
 
 def main():
-    objects = sorted(pathlib.Path(sys.argv[1]).rglob("dop853_fma.cc.o"))
+    name = sys.argv[2] if len(sys.argv) > 2 else "dop853_fma.cc.o"
+    if name not in ENTRIES:
+        print(f"unknown object {name}: one of {', '.join(ENTRIES)}")
+        return 1
+    entry = ENTRIES[name]
+    objects = sorted(pathlib.Path(sys.argv[1]).rglob(name))
     if len(objects) != 1:
-        print(f"expected one dop853_fma.cc.o below {sys.argv[1]}, found {len(objects)}")
+        print(f"expected one {name} below {sys.argv[1]}, found {len(objects)}")
         return 1
     names = exported_functions(objects[0])
     vex = first_vex_instruction(objects[0], names)
-    entries = [n for n in vex if ENTRY in n]
-    stand_ins = [n for n in vex if ENTRY not in n]
+    entries = [n for n in vex if entry and entry in n]
+    stand_ins = [n for n in vex if not (entry and entry in n)]
     for n in stand_ins:
         print(f"{names[n]} {n}: {vex[n]} (AVX code under a name the baseline code shares)")
-    if not entries:
-        print(f"no {ENTRY} with AVX code in {objects[0]}: the copy is not compiled for AVX2 + FMA")
+    if entry and not entries:
+        print(f"no {entry} with AVX code in {objects[0]}: the copy is not compiled for AVX2 + FMA")
         return 1
-    print(f"{objects[0]}: {len(names)} exported functions, AVX code only in the "
-          f"{len(entries)} entry points" if not stand_ins else f"{len(stand_ins)} stand-ins")
+    if not entry:
+        local = exported_functions(objects[0], "t")
+        if not first_vex_instruction(objects[0], local):
+            print(f"no function with AVX code in {objects[0]}: not compiled for AVX2 + FMA")
+            return 1
+    if stand_ins:
+        print(f"{len(stand_ins)} stand-ins")
+    elif entry:
+        print(f"{objects[0]}: {len(names)} exported functions, AVX code only in the "
+              f"{len(entries)} entry points")
+    else:
+        print(f"{objects[0]}: {len(names)} exported functions, none with AVX code")
     return 1 if stand_ins else 0
 
 
