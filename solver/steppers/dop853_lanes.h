@@ -28,7 +28,18 @@
 // Not here (the next piece): the driver. The lanes step and interpolate; events, restarts and a
 // lane that finishes taking the next impact are the caller's (dop853_lanes_run.h says what the
 // driver would need). Fixed-step mode (IntegratorOptions::fixed_step) is not supported: the
-// constructor refuses it.
+// constructor refuses it. A lane's step is read (x0, x1, f1, interpolate) before the next
+// attempt(), which begins that lane's next step in the same stage arrays.
+//
+// Measured (callgrind, this unit as built, the four paper states of bench/benchmarks.cc, net of
+// the lanes' start): nine steps a lane driven by attempt() (lanes busy in 43 of 44
+// lane-attempts), 612 instructions a lane-step in lanes against 1,237 for the scalar
+// Dop853Stepper (0.49); in lockstep, three steps a lane (13 of 16 lane-attempts useful), 702
+// against 1,156 (0.61). Compiled with contraction into fused multiply-adds, as the FMA copy is
+// (not bit for bit then), 540 against 1,054 (0.51) and 621 against 991 (0.63). A call of
+// attempt() costs about two scalar attempts: the stage sums are the same instructions on four
+// lanes, the force computes every branch's formula, and each lane's controller and bookkeeping
+// stay scalar (~15 % of the call).
 #pragma once
 
 #include <array>

@@ -1,16 +1,24 @@
 // Paper-scene lanes for dop853 in lanes (dop853_lanes_run.h), baseline code: kept out of
 // dop853_lanes.cc, whose headers are read for AVX2 + FMA.
 #include <algorithm>
+#include <cmath>
+#include <string>
 
+#include "scene/input_error.h"
 #include "scene/scene.h"
 #include "solver/steppers/dop853_lanes_run.h"
 
 namespace ivv {
 
 LaneStart paper_lane(double v0, double zeta, const LanePlace& at) {
+  if (!(zeta > 0) || !std::isfinite(zeta))  // v0 is validated with the scene
+    throw InputError(
+        "damping.zeta",
+        "must be finite and > 0 (the lanes' system has a dashpot), got " + std::to_string(zeta));
   Scene scene = paper_scene();
   scene.velocity = v0;
   scene.damping = Damping::ratio(zeta);
+  validate(scene);
   const DerivedParameters p = derive(scene);
   const Scales k = scales(scene, p, ElastoplasticLaw::scale_basis);
   LaneStart lane;

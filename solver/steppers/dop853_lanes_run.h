@@ -87,6 +87,7 @@ struct LanePlace {
 // and a state consistent with the equations: z and w as given, J = 1 - w and
 // Wa = (1 - w^2)/2 (exact integrals of J' = F = -w'), a = z + 2 zeta J (y' = 2 zeta F), and
 // Wv = Wa less the energy the spring holds (at least 0; the ledger less the plastic work).
+// Throws InputError naming damping.zeta unless zeta > 0, and as validate(scene) does for v0.
 LaneStart paper_lane(double v0, double zeta, const LanePlace& at);
 
 // Whether this process can run the lanes: false only where dop853_lanes.cc is compiled for AVX2

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "scene/input_error.h"
 #include "solver/steppers/dop853_lanes_run.h"
 
 namespace ivv {
@@ -199,6 +200,12 @@ TEST(ElastoplasticForceLanes, EachLaneIsTheScalarForceOnItsBranch) {
       }
     }
   }
+}
+
+TEST(Dop853Lanes, APaperLaneNeedsADashpot) {
+  EXPECT_THROW(paper_lane(1.0, 0.0, {}), InputError);
+  EXPECT_THROW(paper_lane(1.0, std::numeric_limits<double>::quiet_NaN(), {}), InputError);
+  EXPECT_THROW(paper_lane(-1.0, 0.1, {}), InputError);
 }
 
 TEST(Dop853Lanes, RefusesFixedStepMode) {
