@@ -478,9 +478,10 @@ class ImpactDriver {
       return event_root(active.kinds[i], sys_, s);
     };
     // the roots at this step's start are those at the last one's end when that step fired
-    // nothing and the same roots are active (same branch): not evaluated twice
-    const bool reuse = roots_at_end_.valid && roots_at_end_.size == active.size() &&
-                       roots_at_end_.kinds == active.kinds;
+    // nothing: then no event acted and no restart took place, so the branch, the events found
+    // and with them the active roots are those of the last step (active_events), and the
+    // values are not evaluated twice
+    const bool reuse = roots_at_end_.valid && roots_at_end_.size == active.size();
     // the roots at the step's end from the stepper's derivative there, where it has one
     std::array<T, ActiveEvents::capacity> g1{};
     const std::array<T, ActiveEvents::capacity>* at_end = nullptr;
@@ -492,7 +493,7 @@ class ImpactDriver {
     Earliest earliest = locate_earliest(
         scan_t0_, scan_x0_, stepper_.t1(), stepper_.x1(), interpolate, active.roots, root,
         opt_.locator, opt_.locate_events, reuse ? &roots_at_end_.g : nullptr, at_end);
-    roots_at_end_ = {!earliest.t, active.size(), active.kinds, earliest.g1};
+    roots_at_end_ = {!earliest.t, active.size(), earliest.g1};
     return earliest;
   }
 
@@ -500,7 +501,6 @@ class ImpactDriver {
   struct RootsAtEnd {
     bool valid = false;  // no event fired on that step: the next starts from its end
     int size = 0;
-    std::array<EventKind, ActiveEvents::capacity> kinds{};
     std::array<T, ActiveEvents::capacity> g{};
   };
 
