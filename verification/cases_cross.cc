@@ -124,6 +124,56 @@ Outcome machine_codes_agree(LawKind law, int n_v0, int n_zeta) {
                      fmt(worst, 3) + " at " + where);
 }
 
+// The map of `law` (dop853, rtol 1e-8 with the default atol, as `ivv sweep --rtol 1e-8` runs it;
+// v0 0.1-10 m/s log x zeta 0-1, n_v0 x n_zeta points) against the same map at rtol = atol =
+// 1e-12. Measured: the largest |e - e_tight| over the sum of the two runs' stated errors
+// (accumulated_error_bound of each run's steps). A point captured in one run and separated in the
+// other is held to the captured run's bound on e (e_bound) plus the two stated errors.
+Outcome map_within_stated_error(LawKind law, int n_v0, int n_zeta) {
+  double worst = 0, largest_de = 0;
+  int points = 0, capture_boundary = 0;
+  std::string where = "none", failure;
+  for (int i = 0; i < n_v0 && failure.empty(); ++i) {
+    for (int j = 0; j < n_zeta; ++j) {
+      const double v0 = 0.1 * std::pow(100.0, i / static_cast<double>(n_v0 - 1));
+      const double zeta = j / static_cast<double>(n_zeta - 1);
+      SimulationRequest req = request(with(paper_scene(), v0, zeta), law, IntegratorKind::dop853);
+      req.model = ModelKind::full;
+      req.options.rtol = 1e-8;
+      const ImpactResult r = simulate(req);
+      SimulationRequest tight = req;
+      tight.options.rtol = tight.options.atol = 1e-12;
+      const ImpactResult ref = simulate(tight);
+      const std::string label = "v0=" + fmt(v0) + " zeta=" + fmt(zeta);
+      if (!r.ok() || !ref.ok()) {
+        failure = label + ": " + r.reason + ref.reason;
+        break;
+      }
+      ++points;
+      double allowed = accumulated_error_bound(r.steps, req.options) +
+                       accumulated_error_bound(ref.steps, tight.options);
+      if (r.status != ref.status) {
+        ++capture_boundary;
+        allowed += r.status == ImpactStatus::captured ? r.e_bound : ref.e_bound;
+      }
+      const double de = std::abs(r.e - ref.e);
+      largest_de = std::max(largest_de, de);
+      if (de / allowed > worst) {
+        worst = de / allowed;
+        where = label;
+      }
+    }
+  }
+  if (!failure.empty()) return at_most(std::nan(""), 1.0, failure);
+  return at_most(worst, 1.0,
+                 std::string(to_string(law)) + ", " + std::to_string(points) +
+                     " points: largest |e(rtol 1e-8) - e(rtol 1e-12)| " + fmt(largest_de, 3) +
+                     " (units of v0), " + std::to_string(capture_boundary) +
+                     " points captured in one run only; the largest |de| over the sum of the two "
+                     "stated errors is " +
+                     fmt(worst, 3) + " at " + where);
+}
+
 }  // namespace
 
 void register_cross_implementation_cases(Registry& reg) {
@@ -143,6 +193,22 @@ void register_cross_implementation_cases(Registry& reg) {
            "m/s x zeta 0-1) in the AVX2 + FMA machine code vs the baseline x86-64 code",
            Tier::cross_implementation, machine_code_reason, Cost::quick,
            [] { return machine_codes_agree(LawKind::hertz, 10, 10); }});
+  const char* map_reason =
+      "each run's e is within its stated error of the exact e, accumulated_error_bound "
+      "(solver/consistency.h: 10 x steps x 2 (atol + 2 rtol), the bound every run's ledger is held "
+      "to), so the two differ by at most the sum of their stated errors: measured over that "
+      "sum, at most 1. It holds what the driver does to an impact (event location, step sizes "
+      "after events, capture) to the accuracy the map states, point by point";
+  reg.add({"convergence.map.elastoplastic",
+           "The paper map (elastoplastic, dop853, 30 x 30 points v0 0.1-10 m/s x zeta 0-1) at "
+           "rtol 1e-8 vs the same map at rtol 1e-12",
+           Tier::convergence, map_reason, Cost::quick,
+           [] { return map_within_stated_error(LawKind::elastoplastic, 30, 30); }});
+  reg.add({"convergence.map.hertz",
+           "Zener's problem (Hertz with the dashpot, dop853, 10 x 10 points v0 0.1-10 m/s x zeta "
+           "0-1) at rtol 1e-8 vs the same map at rtol 1e-12",
+           Tier::convergence, map_reason, Cost::quick,
+           [] { return map_within_stated_error(LawKind::hertz, 10, 10); }});
   for (LawKind law : all_laws()) {
     for (IntegratorKind k : double_integrators()) {
       const Tolerance tol = default_settings_tolerance(k);

@@ -225,7 +225,9 @@ struct EarliestCrossing {
   // crossing times of the roots solved in the earliest bracketing subinterval (others nullopt)
   std::array<std::optional<T>, Capacity> found{};
   std::array<bool, Capacity> armed{};  // strictly on the pre-event side at t0
-  std::array<T, Capacity> g1{};        // each root's value at x1 (the next step's g at x0)
+  // each root's value at x1 (the next step's g at x0); set only when no root crossed (t is
+  // nullopt): a step on which a root crossed is not continued from its end
+  std::array<T, Capacity> g1{};
 };
 
 // The earliest crossing among the roots of `set` on one step [t0, t1] with end states x0, x1.
@@ -234,11 +236,13 @@ struct EarliestCrossing {
 // When a non-monotone root is active and `solve` is true, the step is probed at
 // opt.samples equal subintervals (a root returning to its pre-event side within the step is
 // not missed); each probe state is interpolated once and shared by all roots. Only the earliest
-// bracketing subinterval is solved (solve_crossing), for the roots that cross in it. With
-// `solve` false a crossing is placed at t1 (detection at step ends, for demonstrations).
+// bracketing subinterval is solved (solve_crossing), for the roots that cross in it; the probes
+// are taken in order and stop there (the later ones cannot change the answer). With `solve`
+// false a crossing is placed at t1 (detection at step ends, for demonstrations).
 // `g0`, when given, holds the roots' values at x0 (the previous step's g1 for the same roots
 // at the same state: a step's start is the last one's end), which are then not recomputed;
-// `g1` likewise at x1 (the caller has them from the stepper's derivative there).
+// `g1` likewise at x1 (the caller has them from the stepper's derivative there). A step with
+// no root armed at x0 is not probed (nothing can cross on it).
 // Throws EventLocationError as solve_crossing does.
 template <std::size_t Capacity, class T, class State, class Interpolate, class Root>
 EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, const T& t1,
@@ -247,65 +251,65 @@ EarliestCrossing<T, Capacity> locate_earliest(const T& t0, const State& x0, cons
                                               const LocatorOptions& opt, bool solve,
                                               const std::array<T, Capacity>* g0 = nullptr,
                                               const std::array<T, Capacity>* g1 = nullptr) {
-  bool probe = false;
-  for (int i = 0; i < set.size; ++i) probe = probe || !set.roots[i].monotone;
-  const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
-  std::array<T, LocatorOptions::max_samples + 1> tp;
-  std::array<std::array<T, Capacity>, LocatorOptions::max_samples + 1> gp;
-  State s{};  // interpolate() may fill only the components the roots read
-  for (int k = 0; k <= n; ++k) {
-    tp[k] = k == 0 ? t0 : k == n ? t1 : T(t0 + (t1 - t0) * k / n);
-    const State* xk = &s;
-    if (k == 0 && g0) {
-      gp[0] = *g0;
-      continue;
-    }
-    if (k == n && g1) {
-      gp[n] = *g1;
-      continue;
-    }
-    if (k == 0)
-      xk = &x0;
-    else if (k == n)
-      xk = &x1;
-    else
-      interpolate(tp[k], s);
-    for (int i = 0; i < set.size; ++i) gp[k][i] = g(i, *xk);
-  }
   EarliestCrossing<T, Capacity> out;
-  out.g1 = gp[n];
-  std::array<int, Capacity> sub{};  // first subinterval in which root i is past its event
-  int first_sub = n + 1;
+  auto values_at = [&](const State& x, std::array<T, Capacity>& values) {
+    for (int i = 0; i < set.size; ++i) values[i] = g(i, x);
+  };
+  // the roots' values at the ends of the subinterval [ta, tb] being probed
+  std::array<T, Capacity> ga, gb;
+  if (g0)
+    ga = *g0;
+  else
+    values_at(x0, ga);
+  bool armed = false, probe = false;
   for (int i = 0; i < set.size; ++i) {
-    const Direction dir = set.roots[i].direction;
-    out.armed[i] = is_pre_event(gp[0][i], dir);
-    sub[i] = n + 1;
-    if (!out.armed[i]) continue;
-    for (int k = 1; k <= n; ++k)
-      if (!is_pre_event(gp[k][i], dir)) {
-        sub[i] = k;
-        break;
-      }
-    first_sub = std::min(first_sub, sub[i]);
+    out.armed[i] = is_pre_event(ga[i], set.roots[i].direction);
+    armed = armed || out.armed[i];
+    probe = probe || !set.roots[i].monotone;
   }
-  for (int i = 0; i < set.size; ++i) {
-    if (sub[i] != first_sub || first_sub > n) continue;
-    const int k = sub[i];
-    if (solve) {
-      auto g_of_t = [&](T t) {
-        interpolate(t, s);
-        return g(i, s);
-      };
-      out.found[i] = solve_crossing(g_of_t, tp[k - 1], tp[k], gp[k - 1][i], gp[k][i],
-                                    set.roots[i].direction, opt);
+  if (!armed) {  // nothing can cross: the values at x1 only, for the next step
+    if (g1)
+      out.g1 = *g1;
+    else
+      values_at(x1, out.g1);
+    return out;
+  }
+  const int n = solve && probe ? std::clamp(opt.samples, 1, LocatorOptions::max_samples) : 1;
+  State s{};  // interpolate() may fill only the components the roots read
+  T ta = t0;
+  for (int k = 1; k <= n; ++k) {
+    const T tb = k == n ? t1 : T(t0 + (t1 - t0) * k / n);
+    if (k < n) {
+      interpolate(tb, s);
+      values_at(s, gb);
+    } else if (g1) {
+      gb = *g1;
     } else {
-      out.found[i] = t1;
+      values_at(x1, gb);
     }
-    if (!out.t || *out.found[i] < *out.t) {
-      out.t = out.found[i];
-      out.first = i;
+    bool crossed = false;
+    for (int i = 0; i < set.size; ++i) {
+      if (!out.armed[i] || is_pre_event(gb[i], set.roots[i].direction)) continue;
+      crossed = true;
+      if (solve) {
+        auto g_of_t = [&](T t) {
+          interpolate(t, s);
+          return g(i, s);
+        };
+        out.found[i] = solve_crossing(g_of_t, ta, tb, ga[i], gb[i], set.roots[i].direction, opt);
+      } else {
+        out.found[i] = t1;
+      }
+      if (!out.t || *out.found[i] < *out.t) {
+        out.t = out.found[i];
+        out.first = i;
+      }
     }
+    if (crossed) return out;
+    ta = tb;
+    ga = gb;
   }
+  out.g1 = gb;
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "solver/driver/impact_system.h"
 #include "solver/laws/elastoplastic.h"
+#include "solver/laws/hertz.h"
 #include "solver/laws/hunt_crossley.h"
 #include "solver/steppers/dop853.h"
 
@@ -112,6 +113,44 @@ TEST(ImpactEvents, UnloadingEndsAtSeparationOnceMaxDisplacementIsFound) {
   Plastic::state_type at_perm = x;
   at_perm[Plastic::Z] = sys.branch.z_perm;
   EXPECT_NEAR(event_root(EventKind::separation, sys, at_perm), 0.0, kRootTolerance);
+}
+
+// A law that declares separates_at_z_perm (law.h) has the separation root z - z_perm: it must
+// have the sign of the force on the unloading branch wherever the locator may evaluate it, from
+// above z_m down past z = 0 onto the continuation. Points within rounding of the root (1e-12
+// z_m, ~1e4 ulps of z_m, where the force's factored form and z - z_perm may round to opposite
+// signs) are not judged.
+template <class System>
+void expect_separation_root_has_the_sign_of_the_force(const System& sys, const char* what) {
+  const double z_m = sys.branch.z_max, z_f = sys.branch.z_perm;
+  for (int k = -100; k <= 120; ++k) {
+    const double z = z_m * k / 100.0;
+    if (std::abs(z - z_f) <= 1e-12 * z_m) continue;
+    typename System::state_type x{};
+    x[System::has_dashpot ? System::Z : System::A] = z;
+    x[System::W] = -0.3;
+    const double g = event_root(EventKind::separation, sys, x), F = sys.force(x);
+    EXPECT_EQ(g > 0, F > 0) << what << ", z = " << z << ": root " << g << ", force " << F;
+    EXPECT_EQ(g < 0, F < 0) << what << ", z = " << z << ": root " << g << ", force " << F;
+    EXPECT_EQ(g, z - z_f) << what << ", z = " << z;  // the set, not the force
+  }
+}
+
+TEST(ImpactEvents, SeparationAtThePermanentSetHasTheSignOfTheForce) {
+  static_assert(law_separates_at_z_perm<ElastoplasticLaw>() && law_separates_at_z_perm<HertzLaw>());
+  static_assert(!law_separates_at_z_perm<HuntCrossleyLaw>());
+  Plastic yielded = plastic_system();
+  law_next_segment(yielded.law, yielded.branch);
+  law_begin_unloading(yielded.law, yielded.branch, 0.5);
+  ASSERT_GT(yielded.branch.z_perm, 0.1);
+  expect_separation_root_has_the_sign_of_the_force(yielded, "elastoplastic, yielded");
+  Plastic elastic = plastic_system();  // z_m below z_y: back down the Hertz curve, z_perm = 0
+  law_begin_unloading(elastic.law, elastic.branch, 0.2);
+  expect_separation_root_has_the_sign_of_the_force(elastic, "elastoplastic, elastic");
+  ImpactSystem<HertzLaw, false> hertz;
+  hertz.law = {1.0};
+  law_begin_unloading(hertz.law, hertz.branch, 0.3);
+  expect_separation_root_has_the_sign_of_the_force(hertz, "hertz");
 }
 
 TEST(ImpactEvents, RateDependentLawProbesPeakForceAndSeparation) {

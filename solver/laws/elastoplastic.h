@@ -42,6 +42,9 @@ struct ElastoplasticLaw {
   static constexpr bool rate_dependent = false;
   static constexpr ScaleBasis scale_basis = ScaleBasis::yield;
   static constexpr bool needs_yield_strength = true;
+  // Unloading F = K_h (z^{3/2} - z_f^{3/2}) rises with z through zero at z_f = z_perm, and its
+  // continuation below z = 0, K_h z |z|^{1/2} - K_h z_f^{3/2}, is negative (law.h)
+  static constexpr bool separates_at_z_perm = true;
   static constexpr std::string_view summary =
       "Hertz to z_y, then linear K_y; Hertz-shaped unloading (paper eqs 8-10)";
   static constexpr std::array<ParameterSpec, 0> parameters{};

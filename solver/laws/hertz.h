@@ -24,6 +24,8 @@ struct HertzLaw {
   static constexpr bool rate_dependent = false;
   static constexpr ScaleBasis scale_basis = ScaleBasis::hertz;
   static constexpr bool needs_yield_strength = false;
+  // F = K_h z |z|^{1/2} has the sign of z, and z_perm = 0 (law.h)
+  static constexpr bool separates_at_z_perm = true;
   static constexpr std::string_view summary =
       "F = K_h z^{3/2} (Hertz, elastic; paper eq. 5, Johnson 1985 §4.2)";
   static constexpr std::array<ParameterSpec, 0> parameters{};

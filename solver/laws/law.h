@@ -106,6 +106,13 @@ class LawDomainError : public std::runtime_error {
 //                                             conformance check static.onset, which then holds
 //                                             F(0) to it instead of 0; the driver does not read it
 //                                             (onset is the initial state whatever F(0) is)
+//   separates_at_z_perm      bool             on every unloading branch F has the sign of
+//                                             z - z_perm wherever it is evaluated (F rises
+//                                             with z through zero at the permanent set, and
+//                                             its continuation below stays negative), so
+//                                             the separation event may use z - z_perm as its
+//                                             root (impact_events.h); rate-independent laws
+//                                             without tension only (default false: F itself)
 //   separation_work(h, z)    [J]              std::optional<double>: for a law that allows
 //                                             tension, int_0^z F(s, 0) ds on the unloading branch
 //                                             h, the work the contact force does on the impactor
@@ -260,6 +267,15 @@ template <class L>
 constexpr bool law_needs_yield_strength() {
   if constexpr (requires { L::needs_yield_strength; })
     return L::needs_yield_strength;
+  else
+    return false;
+}
+
+// True when the law declares separates_at_z_perm (above) and is rate-independent.
+template <class L>
+constexpr bool law_separates_at_z_perm() {
+  if constexpr (requires { L::separates_at_z_perm; })
+    return L::separates_at_z_perm && !L::rate_dependent;
   else
     return false;
 }

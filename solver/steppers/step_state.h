@@ -78,6 +78,10 @@ class AdaptiveStepState : public StepState<System> {
   void propose_step(T h) {
     if (!fixed_) h_ = h;
   }
+  // The step to try next scaled by `factor` (ignored in fixed-step mode).
+  void scale_proposed_step(T factor) {
+    if (!fixed_) h_ *= factor;
+  }
 
  protected:
   explicit AdaptiveStepState(const IntegratorOptions& opt)
