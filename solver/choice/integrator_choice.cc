@@ -76,9 +76,9 @@ bool overdamped_at_permanent_set(const DerivedParameters& p, double z_m) {
 }
 
 // The same decision without the cube root of z_f (~125 instructions of a map's point,
-// callgrind), where it is clear: with s = z_f^{3/2} (permanent_set_three_halves), sqrt(z_f) = s^{1/3},
-// so K_f m >= 4 c^2 is s >= T^3, T = 4 c^2/(1.5 K_h m). The two sides as computed here and as
-// overdamped_at_permanent_set() computes them are each within ~1e-14 of their exact values, so
+// callgrind), where it is clear: with s = z_f^{3/2} (permanent_set_three_halves), sqrt(z_f) =
+// s^{1/3}, so K_f m >= 4 c^2 is s >= T^3, T = 4 c^2/(1.5 K_h m). The two sides as computed here and
+// as overdamped_at_permanent_set() computes them are each within ~1e-14 of their exact values, so
 // where s/T^3 is more than kClearMargin away from 1 (and every quantity a normal double) both
 // give the exact answer; nearer (or with a subnormal, infinite or NaN part) the written form
 // decides. The same decision at every z_m (integrator_choice_test.cc, at the boundary too).
