@@ -182,11 +182,14 @@ StagedFile::~StagedFile() {
   fs::remove(tmp_, ignored);
 }
 
-void StagedFile::commit() {
+void StagedFile::commit(Replace how) {
   // an existing file keeps its permissions
   std::error_code ec;
   const fs::file_status old = fs::status(target_, ec);
-  if (!ec && fs::is_regular_file(old)) fs::permissions(tmp_, old.permissions(), ec);
+  if (!ec && fs::is_regular_file(old)) {
+    fs::permissions(tmp_, old.permissions(), ec);
+    if (how == Replace::after_removing) fs::remove(target_);  // throws if it cannot
+  }
   fs::rename(tmp_, target_);
   committed_ = true;
 }

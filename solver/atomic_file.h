@@ -68,7 +68,17 @@ class StagedFile {
   ~StagedFile();
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
-  void commit();  // rename over the destination (keeping an existing file's permissions)
+  // How commit() replaces an existing destination.
+  //   atomically: renamed over it; a reader sees the old file or the new one, never neither.
+  //   after_removing: the old file removed first, then the temporary renamed into place; a reader
+  //     may find no file for that moment (never a partial one). For large files on ext4: a
+  //     rename over an existing file makes the kernel allocate the new file's blocks at once
+  //     (auto_da_alloc), in the committing process: 15-23 ms for a 20 MB sweep CSV (strace -T of
+  //     rename), where a file renamed to a free name has them allocated later by the kernel's
+  //     writeback, as any new file does.
+  enum class Replace { atomically, after_removing };
+  // Renames the temporary into place, keeping an existing file's permissions.
+  void commit(Replace how = Replace::atomically);
   const std::filesystem::path& target() const { return target_; }
 
  private:

@@ -161,6 +161,27 @@ TEST_F(AtomicFile, StagedFromAFileTakesTheFileAndAppearsOnlyOnCommit) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 
+// Either way of replacing leaves the new content with the old file's permissions, and nothing
+// else in the directory; after_removing also commits where no file was before.
+TEST_F(AtomicFile, CommitAfterRemovingReplacesAndKeepsPermissionsAsARenameDoes) {
+  for (const StagedFile::Replace how :
+       {StagedFile::Replace::atomically, StagedFile::Replace::after_removing}) {
+    std::ofstream(dir_ / "a.csv") << "old\n";
+    fs::permissions(dir_ / "a.csv", fs::perms::owner_read | fs::perms::owner_write);
+    StagedFile staged(dir_ / "a.csv", [](std::ostream& out) { out << "new\n"; });
+    EXPECT_EQ(slurp(dir_ / "a.csv"), "old\n");
+    staged.commit(how);
+    EXPECT_EQ(slurp(dir_ / "a.csv"), "new\n");
+    EXPECT_EQ(fs::status(dir_ / "a.csv").permissions(),
+              fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+    fs::remove(dir_ / "a.csv");
+  }
+  StagedFile fresh(dir_ / "b.csv", [](std::ostream& out) { out << "b\n"; });
+  fresh.commit(StagedFile::Replace::after_removing);
+  EXPECT_EQ(slurp(dir_ / "b.csv"), "b\n");
+}
+
 TEST_F(AtomicFile, DirectoryAndEmptyPathAreRejectedNamingTheFlag) {
   EXPECT_EQ(rejected_field(dir_), "--out");
   EXPECT_EQ(rejected_field(dir_ / "."), "--out");
