@@ -159,7 +159,8 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
       WorkerClock clock(opt.workers ? &(*opt.workers)[worker] : nullptr, origin);
       SweepRowBatch rows;
       SimulationRequest point = req.base;  // each point's request made in it
-      std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait);
+      const auto workers = static_cast<std::size_t>(po.threads);
+      std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait, workers);
       for (;;) {
         if (opt.stop && *opt.stop) {  // a batch taken but not run is left for --resume
           sink.request_stop();
@@ -176,7 +177,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         }
         const std::size_t delivered = rows.size();
         clock.add_points(delivered);
-        batch = sink.deliver_and_take(rows, opt.batch);
+        batch = sink.deliver_and_take(rows, opt.batch, workers);
         if (opt.progress) {  // once a point, as the callers count (mpi_sweep.cc)
           std::lock_guard lock(progress_mutex);
           const std::size_t done = sink.done();

@@ -347,16 +347,18 @@ bool SweepSink::exhausted() const {
   return stop_ || cursor_ >= total_;
 }
 
-std::vector<std::size_t> SweepSink::take(std::size_t max, WhenAhead when_ahead) {
+std::vector<std::size_t> SweepSink::take(std::size_t max, WhenAhead when_ahead,
+                                         std::size_t workers) {
   std::unique_lock lock(mutex_);
-  return take_locked(lock, max, when_ahead);
+  return take_locked(lock, max, when_ahead, workers);
 }
 
 std::vector<std::size_t> SweepSink::take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
-                                                WhenAhead when_ahead) {
+                                                WhenAhead when_ahead, std::size_t workers) {
   std::vector<std::size_t> out;
   while (out.empty()) {
     if (stop_ || cursor_ >= total_) return out;
+    if (workers > 1) max = std::clamp<std::size_t>((total_ - cursor_) / (2 * workers), 1, max);
     if (cursor_ >= next_write_ + options_.window) {
       if (when_ahead == WhenAhead::return_empty) return out;
       written_cv_.wait_for(lock, std::chrono::milliseconds(100));  // also polls stop_
@@ -421,13 +423,14 @@ void SweepSink::deliver(SweepRowBatch& rows) {
   write_pending(Flush::due);
 }
 
-std::vector<std::size_t> SweepSink::deliver_and_take(SweepRowBatch& rows, std::size_t max) {
+std::vector<std::size_t> SweepSink::deliver_and_take(SweepRowBatch& rows, std::size_t max,
+                                                     std::size_t workers) {
   prepare(rows);
   std::vector<std::size_t> next;
   {
     std::unique_lock lock(mutex_);
     record_batch(rows);
-    next = take_locked(lock, max, WhenAhead::wait);
+    next = take_locked(lock, max, WhenAhead::wait, workers);
   }
   write_pending(Flush::due);
   return next;

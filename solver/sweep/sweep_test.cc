@@ -234,6 +234,39 @@ TEST(SweepSink, EachWorkerStatesItsPointsAndWhereItsTimeWent) {
   EXPECT_EQ(points, sink.total());
 }
 
+// Shared among two workers, batches shrink near the end of the grid to a quarter of what is left
+// (at least one point), so neither waits long for the other's last batch; alone, a worker takes
+// full batches to the end. Every point is handed out once, in order, either way.
+TEST(SweepSink, BatchesShrinkNearTheEndWhenWorkersShare) {
+  const SweepRequest req = paper_grid(20, 10);  // 200 points
+  auto sizes = [&](std::size_t workers) {
+    const fs::path csv = scratch("shares" + std::to_string(workers) + ".csv");
+    SweepSink sink(req, {csv, false, "test"});
+    std::vector<std::size_t> out, handed;
+    for (auto chunk = sink.take(32, SweepSink::WhenAhead::return_empty, workers); !chunk.empty();
+         chunk = sink.take(32, SweepSink::WhenAhead::return_empty, workers)) {
+      const std::size_t left = sink.total() - handed.size();
+      if (workers > 1) {
+        EXPECT_LE(chunk.size(), std::max<std::size_t>(1, left / (2 * workers)));
+      }
+      out.push_back(chunk.size());
+      handed.insert(handed.end(), chunk.begin(), chunk.end());
+    }
+    for (std::size_t i = 0; i < handed.size(); ++i) EXPECT_EQ(handed[i], i);
+    EXPECT_EQ(handed.size(), sink.total());
+    EXPECT_FALSE(sink.finish({}));  // nothing delivered: journal and partial stay, removed here
+    fs::remove(sink.journal_path());
+    fs::remove(csv.string() + ".partial");
+    return out;
+  };
+  EXPECT_EQ(sizes(1), (std::vector<std::size_t>{32, 32, 32, 32, 32, 32, 8}));
+  const std::vector<std::size_t> shared = sizes(2);
+  EXPECT_EQ(std::vector<std::size_t>(shared.begin(), shared.begin() + 3),
+            (std::vector<std::size_t>{32, 32, 32}));  // 200, 168, 136 left: a quarter is >= 32
+  EXPECT_EQ(shared[3], 26u);                          // 104 left
+  EXPECT_EQ(shared.back(), 1u);
+}
+
 TEST(SweepSink, ResumeReadsBackFinishedPointsAndToleratesATornLine) {
   SweepRequest req = paper_grid(5, 3);
   req.threads = 2;
