@@ -31,13 +31,11 @@
 // the iteration contracts fast; it is run until s and W_f move by a few ulps.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "solver/driver/onset_series.h"
-#include "solver/driver/onset_series_coefficients.h"
 
 namespace ivv {
 
@@ -52,15 +50,6 @@ struct EndSeriesMatch {
 // Iterations of the match before it is declared unconverged (then no series is used).
 inline constexpr int kEndSeriesIterations = 40;
 
-// The truncation bound of the series at s (onset_series.h: kErrorConstant max(|p|, r)^6) for
-// the stiffness k and |beta|, by products: it is asked after every step of an elastic unloading.
-inline double end_series_bound(double k, double beta, double s) {
-  static_assert(onset_series::kDegree == 5, "the bound is the sixth power of max(|p|, r)");
-  const double k_s = k * s * std::sqrt(s);  // k s^{3/2}
-  const double m = std::max(k_s * s, beta * k_s), m3 = m * m * m;
-  return onset_series::kErrorConstant * m3 * m3;
-}
-
 // The match of (z, w) (normalised, z > 0, w < 0) on F_bar = kappa z^{3/2} with beta = 2 zeta,
 // when the series' truncation bound at the matched s is at most `tolerance`; nullopt when the
 // state is not within the series' reach or the iteration does not converge.
@@ -69,7 +58,7 @@ inline std::optional<EndSeriesMatch> match_end_series(double kappa, double beta,
   if (!(z > 0 && w < 0 && kappa > 0 && beta >= 0)) return std::nullopt;
   double W = -w, s = z / W;
   // the bound at the first estimate: most states of an unloading branch are far outside
-  if (!(end_series_bound(kappa * std::sqrt(W), beta, s) <= tolerance)) return std::nullopt;
+  if (!(onset_series_error_bound(kappa * std::sqrt(W), beta, s) <= tolerance)) return std::nullopt;
   constexpr double ulps = 8 * std::numeric_limits<double>::epsilon();
   for (int iteration = 0; iteration < kEndSeriesIterations; ++iteration) {
     const double k = kappa * std::sqrt(W);
@@ -83,23 +72,25 @@ inline std::optional<EndSeriesMatch> match_end_series(double kappa, double beta,
     if (!(s > 0 && W > 0)) return std::nullopt;
     if (converged) {
       const double k_end = kappa * std::sqrt(W);
-      if (!(end_series_bound(k_end, beta, s) <= tolerance)) return std::nullopt;
+      if (!(onset_series_error_bound(k_end, beta, s) <= tolerance)) return std::nullopt;
       return EndSeriesMatch{s, W, k_end, onset_series_state(k_end, -beta, s)};
     }
   }
   return std::nullopt;
 }
 
-// A lower bound of the series' reach on an elastic end, the largest s at which the bound is at
-// most `tolerance` for every rebound speed W_f <= 1: the reach min((m/k)^{2/5},
-// (m/(beta k))^{2/3}), m = (tolerance/kErrorConstant)^{1/6}, falls as k = kappa sqrt(W_f)
-// rises, so W_f = 1 gives the least. Two powers once per impact, not per step; where W_f < 1 a
-// step aimed at this reach lands W_f^{1/5} to W_f^{1/3} of the way into the true one.
-inline double end_series_reach(double kappa, double beta, double tolerance) {
-  const double m = std::pow(tolerance / onset_series::kErrorConstant, 1.0 / 6);
-  double reach = std::pow(m / kappa, 0.4);
-  if (beta > 0) reach = std::min(reach, std::pow(m / (beta * kappa), 2.0 / 3.0));
-  return reach;
+// The time left until separation predicted from (z, w) by the same reversal, at the first
+// estimate W_f = -w, s = z / W_f, and the reach of the series there (onset_series_reach with
+// |beta|): where a step must end for the next state to be matched. nullopt unless z > 0, w < 0.
+struct EndSeriesTarget {
+  double s = 0;      // predicted tau_f - tau
+  double reach = 0;  // the largest tau_f - tau where the series is accurate to the tolerance
+};
+inline std::optional<EndSeriesTarget> end_series_target(double kappa, double beta, double z,
+                                                        double w, double tolerance) {
+  if (!(z > 0 && w < 0 && kappa > 0 && beta >= 0)) return std::nullopt;
+  const double W = -w;
+  return EndSeriesTarget{z / W, onset_series_reach(kappa * std::sqrt(W), beta, tolerance)};
 }
 
 }  // namespace ivv

@@ -409,10 +409,9 @@ class ImpactDriver {
 
   // The step proposed next on an unloading branch, shortened where the controller would take it
   // past a point where the solution is not smooth:
-  //   - on a Hertzian end (hertzian_end), to end kEndSeriesLanding of the series' reach
-  //     (end_series_reach, once an impact) before the separation predicted at the present rate,
-  //     tau + z / (-w), so that the next state is matched by the series rather than the step
-  //     crossing tau_f;
+  //   - on a Hertzian end (hertzian_end), to end kEndSeriesLanding of the series' reach before
+  //     the predicted separation (end_series_target), so that the next state is matched by the
+  //     series rather than the step crossing tau_f;
   //   - with a permanent set (separation at z_perm > 0, where the branch is smooth), to at most
   //     kKinkShare of the time z / (-z') in which z would reach 0 at its present rate: below
   //     z = 0 the law's formula changes (separation_not_smooth), and a step whose stages pass
@@ -427,16 +426,12 @@ class ImpactDriver {
       const double z = sys_.z(x), beta = System::has_dashpot ? sys_.two_zeta : 0.0;
       double end_at = 0;
       if (const std::optional<double> kappa = hertzian_end()) {
-        const double w = x[System::W];
-        if (!(z > 0 && w < 0)) return;
-        if (!(end_series_reach_ > 0)) end_series_reach_ = end_series_reach(*kappa, beta, opt_.rtol);
-        end_at = z / -w - kEndSeriesLanding * end_series_reach_;
+        const std::optional<EndSeriesTarget> target =
+            end_series_target(*kappa, beta, z, x[System::W], opt_.rtol);
+        if (!target) return;
+        end_at = target->s - kEndSeriesLanding * target->reach;
       } else if constexpr (law_separates_at_z_perm<typename System::law_type>()) {
-        double z_rate = 0;  // dz/dtau: a component of the derivative the stepper holds, if any
-        if constexpr (requires { stepper_.f1(); })
-          z_rate = stepper_.f1()[System::has_dashpot ? System::Z : System::A];
-        else
-          z_rate = static_cast<double>(sys_.z_rate(x));
+        const double z_rate = static_cast<double>(sys_.z_rate(x));
         if (!(sys_.branch.z_perm > 0 && z > 0 && z_rate < 0)) return;
         end_at = kKinkShare * z / -z_rate;
       }
@@ -812,7 +807,6 @@ class ImpactDriver {
   bool resume_ = false;
   RootsAtEnd roots_at_end_;
   int separation_retakes_ = 0;                          // retake_to_separation() so far
-  double end_series_reach_ = 0;                         // end_series_reach(), 0: not yet
   long unloading_steps_ = 0;                            // stalled() so far
   std::string failure_;                                 // why advance() could not take a step
   FailureKind failure_kind_ = FailureKind::integrator;  // and its code
