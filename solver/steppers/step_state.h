@@ -78,6 +78,8 @@ class AdaptiveStepState : public StepState<System> {
   void propose_step(T h) {
     if (!fixed_) h_ = h;
   }
+  // The step the controller proposes to try next (the fixed dt in fixed-step mode).
+  T proposed_step() const { return h_; }
   // The step to try next scaled by `factor` (ignored in fixed-step mode).
   void scale_proposed_step(T factor) {
     if (!fixed_) h_ *= factor;
