@@ -26,8 +26,11 @@ struct IntegratorOptions {
   bool locate_events = true;   // false: events detected only at step ends (demonstrations)
   // Start dop853, dp45 and rodas4 past contact onset from the series of
   // solver/driver/onset_series.h (laws with a Hertzian onset), where it is accurate to rtol: the
-  // steps that leave the z^{3/2} onset are not taken. false: integrate from tau = 0 (the speed
-  // study's "before").
+  // steps that leave the z^{3/2} onset are not taken; and end an elastic contact (a Hertzian
+  // unloading branch with no permanent set) by the same series run backwards from the
+  // separation (solver/driver/end_series.h): the steps into the (tau_f - tau)^{5/2} end are not
+  // taken either. false: integrate from tau = 0 to the located separation (the speed study's
+  // "before").
   bool onset_series = true;
   // Post-run check that the three CORs and the energy ledger agree within what rtol/atol
   // allow (solver/consistency.h); a run that does not is a failure with the reason. Off only
