@@ -24,7 +24,7 @@ namespace {
 //     t rounds to the integer on the fraction's side of 1/2: p <= kMaxProductPrecision digits,
 //     |v| in [2^-100, 2^100). At p = 12 the band is ~2e-4 of the last digit either side of those
 //     three points, so about 1 number in 1,000 goes on (18 of 17,246 in a 60 x 30 paper map's
-//     rows; ~150 instructions a 12-digit number there through write_general<12>, against ~195
+//     rows; ~140 instructions a 12-digit number there through write_general<12>, against ~195
 //     for tier 2 alone through write_general(v, 12), callgrind).
 //  2. An error-free product: |v| 10^s = q + c exactly (fma: for |s| <= 22, 10^s is exact in
 //     double; up to 44 by two exact factors), so the p-digit integer nearest to |v| 10^s is
@@ -268,23 +268,18 @@ template <int p>
   return out + k;
 }
 
-// general(v, p) for p <= kMaxFastPrecision: tier 1, then tier 2, then std::to_chars. One copy
-// for each precision: p a constant, the digits written are only those p needs and the layout's
-// tests fold (~40 instructions fewer a 12-digit number than one copy for every p, callgrind).
+// general(v, p) where tier 1 leaves it: tier 2, zero, or std::to_chars. Out of line, and reached
+// by a jump from write_fast: the common path then makes no call and keeps no register across one
+// (its saves and restores were ~14 instructions a number, callgrind).
 template <int p>
-char* write_fast(char* out, double v) {
+[[gnu::noinline]] char* write_rare(char* out, double v) {
   std::uint64_t bits = 0;
   std::memcpy(&bits, &v, sizeof v);
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);
   const bool negative = (bits >> 63) != 0;
-  const double a = std::abs(v);
-  // |v| in [2^-kProductRange, 2^kProductRange): one unsigned compare
   if (static_cast<unsigned>(biased - (1023 - kProductRange)) < 2u * kProductRange) {
-    const int E = decimal_exponent(a, biased);
-    if constexpr (p <= kMaxProductPrecision)
-      if (const std::optional<Rounded> r = round_by_product<p>(a, E))
-        return write_rounded<p>(out, negative, *r);
-    if (const std::optional<Rounded> r = round_exactly<p>(a, E))
+    const double a = std::abs(v);
+    if (const std::optional<Rounded> r = round_exactly<p>(a, decimal_exponent(a, biased)))
       return write_rounded<p>(out, negative, *r);
   } else if (v == 0) {  // "0" or "-0" at any precision
     if (negative) *out++ = '-';
@@ -292,6 +287,25 @@ char* write_fast(char* out, double v) {
     return out + 1;
   }
   return std::to_chars(out, out + kMaxNumberChars, v, std::chars_format::general, p).ptr;
+}
+
+// general(v, p) for p <= kMaxFastPrecision: tier 1, else write_rare. One copy for each
+// precision: p a constant, the digits written are only those p needs and the layout's tests fold
+// (~40 instructions fewer a 12-digit number than one copy for every p, callgrind).
+template <int p>
+char* write_fast(char* out, double v) {
+  if constexpr (p <= kMaxProductPrecision) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof v);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    // |v| in [2^-kProductRange, 2^kProductRange): one unsigned compare
+    if (static_cast<unsigned>(biased - (1023 - kProductRange)) < 2u * kProductRange) {
+      const double a = std::abs(v);
+      if (const std::optional<Rounded> r = round_by_product<p>(a, decimal_exponent(a, biased)))
+        return write_rounded<p>(out, (bits >> 63) != 0, *r);
+    }
+  }
+  return write_rare<p>(out, v);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 // a 300 x 300 sweep's instructions). general() with p <= 15 goes faster still: it rounds in
 // double arithmetic, from one rounded product where that decides it and else with an exact
 // residual, in one copy for each precision, and leaves only values next to a rounding tie (and
-// the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars (format.cc; ~150 against ~715
+// the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars (format.cc; ~140 against ~715
 // instructions a 12-digit number of a sweep's rows, callgrind; zero is written directly). The
 // append_* forms write into a caller's buffer and allocate nothing once its capacity suffices.
 #pragma once
