@@ -101,30 +101,40 @@ std::string sweep_csv_inputs(const PointInputs& inputs) {
   return s;
 }
 
+SweepInputColumns::Text SweepInputColumns::text(double x) {
+  static_assert(kMaxNumberChars <= sizeof(Text::chars), "a number's text and its comma fit");
+  Text t;
+  t.chars.fill(',');
+  char* end = write_shortest(t.chars.data(), x);                // room for kMaxNumberChars
+  t.size = static_cast<std::size_t>(end - t.chars.data()) + 1;  // and its comma
+  *end = ',';
+  return t;
+}
+
 SweepInputColumns::SweepInputColumns(const SweepRequest& request) : request_(&request) {
-  auto text = [](double x) {
-    std::string s;
-    append_shortest(s, x);
-    return s + ',';
-  };
   for (double v : request.velocities) velocities_.push_back(text(v));
   if (!request.scene_dashpot)
     for (double z : request.zetas) zetas_.push_back(text(z));
   for (const SceneAxis& axis : request.axes) {
     axes_.emplace_back();
-    for (double v : axis.values) axes_.back().push_back(text(v));
+    for (double v : axis.values) {
+      const Text t = text(v);
+      axes_.back().emplace_back(t.chars.data(), t.size);
+    }
   }
 }
 
 void SweepInputColumns::append(std::string& row, std::size_t index) const {
   const GridPosition at = grid_position(*request_, index);
-  row += velocities_[at.velocity];
-  if (request_->scene_dashpot) {  // the zeta the scene's dashpot gives at this point
-    append_shortest(row, point_inputs(*request_, index).zeta);
-    row += ',';
-  } else {
-    row += zetas_[at.zeta];
-  }
+  // v0's text and zeta's, each copied whole into `both` (at most 25 + 32 characters)
+  std::array<char, 2 * sizeof(Text::chars)> both;
+  const Text& v0 = velocities_[at.velocity];
+  std::memcpy(both.data(), v0.chars.data(), sizeof v0.chars);
+  Text derived;  // the zeta the scene's dashpot gives at this point
+  if (request_->scene_dashpot) derived = text(point_inputs(*request_, index).zeta);
+  const Text& zeta = request_->scene_dashpot ? derived : zetas_[at.zeta];
+  std::memcpy(both.data() + v0.size, zeta.chars.data(), sizeof zeta.chars);
+  row.append(both.data(), v0.size + zeta.size);
   if (axes_.empty()) return;
   const std::size_t first = row.size();
   std::size_t rest = at.axes;
