@@ -120,7 +120,8 @@ std::optional<Rounded> round_by_product(double a, int E) {
     // retry moves q towards [lo, hi): its truncation to an int64 is floor(q), two instructions
     // against the library floor's ~18
     const double q = a * power_of_ten(p - 1 - E);
-    const double whole = static_cast<double>(static_cast<std::int64_t>(q));
+    const std::int64_t truncated = static_cast<std::int64_t>(q);
+    const double whole = static_cast<double>(truncated);
     if (whole < lo) {
       --E;
       continue;
@@ -133,7 +134,7 @@ std::optional<Rounded> round_by_product(double a, int E) {
     const double bound = q * kProductError;
     const double from_half = std::abs(fraction - 0.5);
     if (!(from_half > bound && from_half < 0.5 - bound)) return std::nullopt;
-    std::uint64_t digits = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+    std::uint64_t digits = static_cast<std::uint64_t>(truncated) + (fraction > 0.5 ? 1 : 0);
     if (digits == static_cast<std::uint64_t>(hi)) {  // 9.99...5 rounded up to 10.0...
       digits /= 10;
       ++E;
