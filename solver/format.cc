@@ -15,49 +15,77 @@ namespace {
 // ---- general(v, p) for p <= 15 without Ryu's printf tables ---------------------------------
 //
 // std::to_chars with a precision (Ryu printf) costs ~690 instructions a number (callgrind, the
-// sweep's 12-digit results); the rounding it does exactly can be done in double arithmetic
-// for all but a vanishing set of values, which go to it:
-//   |v| 10^s = q + c exactly, q the rounded product and c the rest, by an error-free product
-//   (fma: for |s| <= 22, 10^s is exact in double; up to 44 by two exact factors), so the p-digit
-//   integer nearest to |v| 10^s, s = p - 1 - E, is floor(q) + [frac(q) + c > 1/2], decided
-//   exactly unless frac(q) + c is within kTieMargin of 1/2, where the rounding error of that
-//   sum (~1e-16) could decide it: such values are left to std::to_chars, as are p > 15 (the
-//   integer passes 2^53 / 10), the non-finite and |v| outside about [1e-30, 1e30]; zero is
-//   "0" (or "-0") at every precision, written directly.
+// sweep's 12-digit results); the rounding it does exactly can be done in double arithmetic for
+// all but a vanishing set of values, in two tiers:
+//  1. One product. With s = p - 1 - E (E the decimal exponent of |v|'s leading digit) and
+//     t = |v| 10^s, q = fl(|v| fl(10^s)) = t (1 + d), |d| <= 2u + u^2 (u = 2^-53: the power and
+//     the product each rounded once), so |q - t| < q 2^-51. q - floor(q) is exact (q < 2^53), so
+//     when that fraction is further than q 2^-51 from 0, 1/2 and 1, floor(t) = floor(q) and
+//     t rounds to the integer on the fraction's side of 1/2: p <= kMaxProductPrecision digits,
+//     |v| in [2^-100, 2^100). At p = 12 the band is ~2e-4 of the last digit either side of those
+//     three points, so about 1 number in 1,000 goes on (18 of 17,246 in a 60 x 30 paper map's
+//     rows; ~140 instructions a 12-digit number there through write_general<12>, against ~195
+//     for tier 2 alone through write_general(v, 12), callgrind).
+//  2. An error-free product: |v| 10^s = q + c exactly (fma: for |s| <= 22, 10^s is exact in
+//     double; up to 44 by two exact factors), so the p-digit integer nearest to |v| 10^s is
+//     floor(q) + [frac(q) + c > 1/2], decided exactly unless frac(q) + c is within kTieMargin of
+//     1/2, where the rounding error of that sum (~1e-16) could decide it: such values are left
+//     to std::to_chars, as are p > 15 (the integer passes 2^53 / 10), the non-finite and |v|
+//     outside about [1e-30, 1e30]; zero is "0" (or "-0") at every precision, written directly.
 // The output is the same bytes: format_test holds it against printf's "%.{p}g" on every
-// precision, over random doubles, exact ties and values next to them.
+// precision, over random doubles, exact ties, values next to them and values on either side of
+// tier 1's band.
 
-// 10^0 .. 10^22: each exact in double (5^22 < 2^53).
-constexpr std::array<double, 23> kExactPowers = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+// 10^k for k = kMinPower ... kMaxPower, each the double nearest to it (a decimal literal is
+// rounded to nearest); 10^0 ... 10^22 are exact (5^22 < 2^53).
+constexpr int kMinPower = -32, kMaxPower = 46;
+constexpr std::array<double, kMaxPower - kMinPower + 1> kPowers = {
+    1e-32, 1e-31, 1e-30, 1e-29, 1e-28, 1e-27, 1e-26, 1e-25, 1e-24, 1e-23, 1e-22, 1e-21,
+    1e-20, 1e-19, 1e-18, 1e-17, 1e-16, 1e-15, 1e-14, 1e-13, 1e-12, 1e-11, 1e-10, 1e-9,
+    1e-8,  1e-7,  1e-6,  1e-5,  1e-4,  1e-3,  1e-2,  1e-1,  1e0,   1e1,   1e2,   1e3,
+    1e4,   1e5,   1e6,   1e7,   1e8,   1e9,   1e10,  1e11,  1e12,  1e13,  1e14,  1e15,
+    1e16,  1e17,  1e18,  1e19,  1e20,  1e21,  1e22,  1e23,  1e24,  1e25,  1e26,  1e27,
+    1e28,  1e29,  1e30,  1e31,  1e32,  1e33,  1e34,  1e35,  1e36,  1e37,  1e38,  1e39,
+    1e40,  1e41,  1e42,  1e43,  1e44,  1e45,  1e46};
+constexpr double power_of_ten(int k) {
+  return kPowers[static_cast<std::size_t>(k - kMinPower)];
+}
 constexpr int kMaxExactPower = 22;
 constexpr int kMaxFastPrecision = 15;
+// Tier 1's products: |q - t| < q 2^-51 (above).
+constexpr double kProductError = 0x1p-51;
+// Above 14 digits that band is wider than a quarter of the last digit (q 2^-51 > 0.25 for q
+// near 10^15): tier 1 would hardly ever decide.
+constexpr int kMaxProductPrecision = 14;
+// Tier 1 takes |v| in [2^-kProductRange, 2^kProductRange): E in [-31, 30] and s in [-31, 46]
+// stay inside kPowers (with the one step of E a retry may add).
+constexpr int kProductRange = 100;
 // Nearer a tie than this (in units of the last kept digit) goes to std::to_chars: the sum
 // frac(q) + c is in error by at most ~1e-16 (one rounding of a number below 2).
 constexpr double kTieMargin = 1e-9;
 // Scaled values at or above this are left to std::to_chars (2^63: an int64 holds the rest).
 constexpr double kTruncationLimit = 9.2e18;
 
+static_assert(power_of_ten(0) == 1 && power_of_ten(22) == 1e22 && power_of_ten(-32) == 1e-32 &&
+              power_of_ten(46) == 1e46);
+
 // a 10^s = q + c (c to within ~1e-16 |c|); nullopt for |s| beyond what two exact factors reach.
 struct Scaled {
   double q, c;
 };
-// Inlined into each precision's copy (a call, out of line in the copies, was ~29 instructions
-// of a number against ~10 inline).
-[[gnu::always_inline]] inline std::optional<Scaled> scale_by_power_of_ten(double a, int s) {
+std::optional<Scaled> scale_by_power_of_ten(double a, int s) {
   if (s >= 0 && s <= kMaxExactPower) {
-    const double P = kExactPowers[s];
+    const double P = power_of_ten(s);
     const double q = a * P;
     return Scaled{q, std::fma(a, P, -q)};
   }
   if (s < 0 && s >= -kMaxExactPower) {
-    const double D = kExactPowers[-s];
+    const double D = power_of_ten(-s);
     const double q = a / D;
     return Scaled{q, std::fma(-q, D, a) / D};  // a - q D is exact for the rounded quotient q
   }
   if (s > kMaxExactPower && s <= 2 * kMaxExactPower) {
-    const double P1 = kExactPowers[kMaxExactPower], P2 = kExactPowers[s - kMaxExactPower];
+    const double P1 = power_of_ten(kMaxExactPower), P2 = power_of_ten(s - kMaxExactPower);
     const double q1 = a * P1, r1 = std::fma(a, P1, -q1);
     const double q = q1 * P2;
     return Scaled{q, std::fma(q1, P2, -q) + r1 * P2};
@@ -70,24 +98,59 @@ struct Rounded {
   std::uint64_t digits;
   int exponent;  // E: the decimal exponent of the leading digit
 };
+
+// floor(log10 a) for a > 0 with biased binary exponent `biased` (a normal double): from the
+// binary exponent, floor((e2 - 1) log10 2) (78913 / 2^18 is log10 2 to 6 digits: exact for
+// |e2| < 1000), then one compare with the nearest double to the next power of ten (a value
+// within an ulp of that power may get E one off, which the callers' retries correct). Needs
+// E + 1 inside kPowers.
+int decimal_exponent(double a, int biased) {
+  const int e2 = biased - 1022;  // a in [2^(e2-1), 2^e2)
+  const int E = ((e2 - 1) * 78913) >> 18;
+  return a >= power_of_ten(E + 1) ? E + 1 : E;
+}
+
+// Tier 1 (above): a in [2^-kProductRange, 2^kProductRange), E its decimal_exponent; nullopt
+// where the product's band leaves the rounding open.
 template <int p>
-std::optional<Rounded> round_to_digits(double a) {
-  // E = floor(log10 a) from the binary exponent (floor((e2 - 1) log10 2), 78913 / 2^18 being
-  // log10 2 to 6 digits: exact for |e2| < 1000), then one compare with the nearest power of ten
-  // (a double near 10^(E+1): a value within an ulp of it may get E one off, which the loop below
-  // corrects)
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &a, sizeof a);
-  const int e2 = static_cast<int>((bits >> 52) & 0x7ff) - 1022;  // a in [2^(e2-1), 2^e2)
-  int E = ((e2 - 1) * 78913) >> 18;
-  if (E + 1 >= -kMaxExactPower && E + 1 <= kMaxExactPower &&
-      a >= (E + 1 >= 0 ? kExactPowers[E + 1] : 1.0 / kExactPowers[-(E + 1)]))
-    ++E;
-  const double lo = kExactPowers[p - 1], hi = kExactPowers[p];
+std::optional<Rounded> round_by_product(double a, int E) {
+  constexpr double lo = power_of_ten(p - 1), hi = power_of_ten(p);
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    // q < 10^(p+1): E is floor(log10 a), or one off where a is within an ulp of a power, and a
+    // retry moves q towards [lo, hi): its truncation to an int64 is floor(q), two instructions
+    // against the library floor's ~18
+    const double q = a * power_of_ten(p - 1 - E);
+    const std::int64_t truncated = static_cast<std::int64_t>(q);
+    const double whole = static_cast<double>(truncated);
+    if (whole < lo) {
+      --E;
+      continue;
+    }
+    if (whole >= hi) {
+      ++E;
+      continue;
+    }
+    const double fraction = q - whole;  // exact
+    const double bound = q * kProductError;
+    const double from_half = std::abs(fraction - 0.5);
+    if (!(from_half > bound && from_half < 0.5 - bound)) return std::nullopt;
+    std::uint64_t digits = static_cast<std::uint64_t>(truncated) + (fraction > 0.5 ? 1 : 0);
+    if (digits == static_cast<std::uint64_t>(hi)) {  // 9.99...5 rounded up to 10.0...
+      digits /= 10;
+      ++E;
+    }
+    return Rounded{digits, E};
+  }
+  return std::nullopt;
+}
+
+// Tier 2 (above): a and E as for tier 1; nullopt where it leaves a to std::to_chars.
+template <int p>
+std::optional<Rounded> round_exactly(double a, int E) {
+  const double lo = power_of_ten(p - 1), hi = power_of_ten(p);
   for (int attempt = 0; attempt < 3; ++attempt) {
     const std::optional<Scaled> sc = scale_by_power_of_ten(a, p - 1 - E);
-    // q > 0 and below 2^63 (it is near 10^(p-1) <= 10^14 unless E is far off): floor(q) is
-    // its truncation to an integer, two instructions against the library floor's ~18
+    // q > 0 and below 2^63 (it is near 10^(p-1) <= 10^14 unless E is far off)
     if (!sc || !(sc->q < kTruncationLimit)) return std::nullopt;
     double whole = static_cast<double>(static_cast<std::int64_t>(sc->q));
     double fraction = (sc->q - whole) + sc->c;  // q - floor(q) is exact
@@ -164,7 +227,7 @@ void write_last_digits(char* d, std::uint64_t n) {
 // room for kMaxNumberChars (32), and the widest case, fixed with E = p - 2 = 13, ends its last
 // copy at out + 32; the characters past the number are left as they fall.
 template <int p>
-char* write_rounded(char* out, bool negative, const Rounded& r) {
+[[gnu::always_inline]] inline char* write_rounded(char* out, bool negative, const Rounded& r) {
   static_assert(kMaxFastPrecision <= 15 && kMaxNumberChars >= 32,
                 "sixteen-byte copies of at most 15 digits stay inside the caller's 32 characters");
   char digits[32];  // the sixteen digits, then '0's: a copy of 16 from any of the first p is inside
@@ -206,38 +269,88 @@ char* write_rounded(char* out, bool negative, const Rounded& r) {
   return out + k;
 }
 
-// general(v, p) for finite v != 0 by the rounding above, or null where it leaves v to
-// std::to_chars. One copy for each precision 1 ... kMaxFastPrecision: p a constant, the digits
-// written are only those p needs and the layout's tests fold (~40 instructions fewer a 12-digit
-// number than one copy for every p, callgrind).
+// general(v, p) where tier 1 leaves it: tier 2, zero, or std::to_chars. Out of line, and reached
+// by a jump from write_fast: the common path then makes no call and keeps no register across one
+// (its saves and restores were ~14 instructions a number, callgrind).
+template <int p>
+[[gnu::noinline]] char* write_rare(char* out, double v) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof v);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  const bool negative = (bits >> 63) != 0;
+  if (static_cast<unsigned>(biased - (1023 - kProductRange)) < 2u * kProductRange) {
+    const double a = std::abs(v);
+    if (const std::optional<Rounded> r = round_exactly<p>(a, decimal_exponent(a, biased)))
+      return write_rounded<p>(out, negative, *r);
+  } else if (v == 0) {  // "0" or "-0" at any precision
+    if (negative) *out++ = '-';
+    *out = '0';
+    return out + 1;
+  }
+  return std::to_chars(out, out + kMaxNumberChars, v, std::chars_format::general, p).ptr;
+}
+
+// general(v, p) for p <= kMaxFastPrecision: tier 1, else write_rare. One copy for each
+// precision: p a constant, the digits written are only those p needs and the layout's tests fold
+// (~40 instructions fewer a 12-digit number than one copy for every p, callgrind).
 template <int p>
 char* write_fast(char* out, double v) {
-  const std::optional<Rounded> r = round_to_digits<p>(std::abs(v));
-  return r ? write_rounded<p>(out, std::signbit(v), *r) : nullptr;
+  if constexpr (p <= kMaxProductPrecision) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof v);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    // |v| in [2^-kProductRange, 2^kProductRange): one unsigned compare
+    if (static_cast<unsigned>(biased - (1023 - kProductRange)) < 2u * kProductRange) {
+      const double a = std::abs(v);
+      if (const std::optional<Rounded> r = round_by_product<p>(a, decimal_exponent(a, biased)))
+        return write_rounded<p>(out, (bits >> 63) != 0, *r);
+    }
+  }
+  return write_rare<p>(out, v);
 }
-using FastWriter = char* (*)(char*, double);
-template <std::size_t... k>
-constexpr std::array<FastWriter, sizeof...(k)> fast_writers(std::index_sequence<k...>) {
-  return {&write_fast<static_cast<int>(k) + 1>...};
-}
-constexpr std::array<FastWriter, kMaxFastPrecision> kFastWriters =
-    fast_writers(std::make_index_sequence<kMaxFastPrecision>{});
 
 }  // namespace
 
+template <int p>
+char* write_general(char* first, double v) {
+  static_assert(p >= 0 && p <= kMaxPrecision);
+  if constexpr (p <= kMaxFastPrecision) return write_fast<std::max(p, 1)>(first, v);
+  return std::to_chars(first, first + kMaxNumberChars, v, std::chars_format::general, p).ptr;
+}
+
+namespace {
+using GeneralWriter = char* (*)(char*, double);
+template <std::size_t... p>
+constexpr std::array<GeneralWriter, sizeof...(p)> general_writers(std::index_sequence<p...>) {
+  return {&write_general<static_cast<int>(p)>...};
+}
+constexpr std::array<GeneralWriter, kMaxPrecision + 1> kGeneralWriters =
+    general_writers(std::make_index_sequence<kMaxPrecision + 1>{});
+}  // namespace
+
+// Each precision's copy, for callers that name theirs.
+template char* write_general<0>(char*, double);
+template char* write_general<1>(char*, double);
+template char* write_general<2>(char*, double);
+template char* write_general<3>(char*, double);
+template char* write_general<4>(char*, double);
+template char* write_general<5>(char*, double);
+template char* write_general<6>(char*, double);
+template char* write_general<7>(char*, double);
+template char* write_general<8>(char*, double);
+template char* write_general<9>(char*, double);
+template char* write_general<10>(char*, double);
+template char* write_general<11>(char*, double);
+template char* write_general<12>(char*, double);
+template char* write_general<13>(char*, double);
+template char* write_general<14>(char*, double);
+template char* write_general<15>(char*, double);
+template char* write_general<16>(char*, double);
+template char* write_general<17>(char*, double);
+
 char* write_general(char* first, double v, int precision) {
-  precision = std::clamp(precision, 0, kMaxPrecision);
-  const int p = std::max(precision, 1);
-  if (p <= kMaxFastPrecision && std::isfinite(v)) {
-    if (v == 0) {  // "0" or "-0" at any precision (a sweep's rows hold about one zero a row)
-      if (std::signbit(v)) *first++ = '-';
-      *first = '0';
-      return first + 1;
-    }
-    if (char* end = kFastWriters[p - 1](first, v)) return end;
-  }
-  return std::to_chars(first, first + kMaxNumberChars, v, std::chars_format::general, precision)
-      .ptr;
+  return kGeneralWriters[static_cast<std::size_t>(std::clamp(precision, 0, kMaxPrecision))](first,
+                                                                                            v);
 }
 
 char* write_shortest(char* first, double v) {

@@ -15,11 +15,11 @@
 // arithmetic), about 4x faster than glibc's printf at 12-17 digits; a sweep prints 12 numbers a
 // point and was bound by printf (callgrind: glibc's __printf_fp_l and hack_digit were 14 % of
 // a 300 x 300 sweep's instructions). general() with p <= 15 goes faster still: it rounds in
-// double arithmetic with an exact residual, in one copy for each precision, and leaves only values
-// next to a rounding tie (and the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars
-// (format.cc; ~190 against ~715 instructions a 12-digit number of a sweep's rows, callgrind;
-// zero is written directly). The append_* forms write into a caller's buffer and allocate
-// nothing once its capacity suffices.
+// double arithmetic, from one rounded product where that decides it and else with an exact
+// residual, in one copy for each precision, and leaves only values next to a rounding tie (and
+// the non-finite, |v| outside ~[1e-30, 1e30]) to std::to_chars (format.cc; ~140 against ~715
+// instructions a 12-digit number of a sweep's rows, callgrind; zero is written directly). The
+// append_* forms write into a caller's buffer and allocate nothing once its capacity suffices.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +35,10 @@ inline constexpr std::size_t kMaxNumberChars = 32;
 // Writes general(v, precision) at `first` (room for kMaxNumberChars) and returns the end.
 // precision is clamped to [0, kMaxPrecision].
 char* write_general(char* first, double v, int precision);
+// The same with the precision fixed where it is called, p in [0, kMaxPrecision] (each has its
+// copy in format.cc): no dispatch on the precision (~30 instructions of a number, callgrind).
+template <int p>
+char* write_general(char* first, double v);
 // Writes shortest(v) at `first` (room for kMaxNumberChars) and returns the end.
 char* write_shortest(char* first, double v);
 // Characters the longest integer takes: "-9223372036854775808" is 20.

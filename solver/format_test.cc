@@ -11,6 +11,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace ivv {
@@ -116,6 +117,64 @@ TEST(Format, FastRoundingAgreesWithPrintfAtTiesAndEdges) {
   for (double edge : {1e-30, 1e-29, 1e-33, 1e-34, 1e30, 1e31, 1e36, 1e37})
     for (double x : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 1e300)}) v.push_back(x);
   EXPECT_EQ(mismatches_against_printf(v), 0);
+}
+
+// Tier 1 of write_general (format.cc) decides the rounding from one rounded product q when its
+// fraction is further than q 2^-51 (2 to 4 ulps of q) from 0, 1/2 and 1, and hands the rest on.
+// Values a few ulps either side of that band, at every precision it serves (1 to 14): walks of
+// 1 to 48 ulps up and down from exact ties k + 1/2 (the band around 1/2), from p-digit decimals
+// (the band around 0 and 1: their doubles lie within an ulp of the decimal) and from powers of
+// ten 10^E for E in [-34, 34] (the decimal exponent estimated from the binary one, and one
+// retry, at the edges of a decade and of tier 1's range 2^-100 ... 2^100), against printf.
+TEST(Format, ProductRoundingAgreesWithPrintfAcrossItsBand) {
+  constexpr int kWalk = 48;  // ulps: the band is at most 4 ulps of q, q within 2 ulps of v 10^s
+  std::vector<double> starts;
+  std::mt19937_64 gen(51);
+  std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+  std::uniform_int_distribution<int> shift(-30, 16);
+  for (int p = 1; p <= 14; ++p)
+    for (int i = 0; i < 40; ++i) {
+      const double integer = std::floor(mantissa(gen) * std::pow(10.0, p - 1));
+      const double scale = std::pow(10.0, shift(gen));
+      starts.push_back((integer + 0.5) * scale);
+      starts.push_back(integer * scale);
+    }
+  for (int e = -34; e <= 34; ++e) starts.push_back(std::pow(10.0, e));
+  for (double x : {0x1p-100, 0x1p100}) starts.push_back(x);
+  std::vector<double> v;
+  for (double start : starts) {
+    double up = start, down = start;
+    for (int k = 0; k <= kWalk; ++k) {
+      v.push_back(up);
+      v.push_back(-down);
+      up = std::nextafter(up, 1e300);
+      down = std::nextafter(down, 0.0);
+    }
+  }
+  EXPECT_EQ(mismatches_against_printf(v), 0);
+}
+
+template <int p>
+int fixed_precision_mismatches(const std::vector<double>& values) {
+  int mismatches = 0;
+  for (double x : values) {
+    char text[kMaxNumberChars];
+    const std::string fixed(text, write_general<p>(text, x));
+    if (fixed != printf_g(x, p) && ++mismatches <= 10)
+      ADD_FAILURE() << "precision " << p << ": " << fixed << " vs printf " << printf_g(x, p);
+  }
+  return mismatches;
+}
+
+template <std::size_t... p>
+int fixed_precision_mismatches(const std::vector<double>& values, std::index_sequence<p...>) {
+  return (fixed_precision_mismatches<static_cast<int>(p)>(values) + ...);
+}
+
+// write_general<p>, the copy a caller names (the sweep's rows: 12), against printf at every p.
+TEST(Format, FixedPrecisionIsPrintfG) {
+  EXPECT_EQ(fixed_precision_mismatches(samples(), std::make_index_sequence<kMaxPrecision + 1>{}),
+            0);
 }
 
 TEST(Format, FmtIsAnOstreamAtItsPrecision) {
