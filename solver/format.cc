@@ -110,6 +110,21 @@ int decimal_exponent(double a, int biased) {
   return a >= power_of_ten(E + 1) ? E + 1 : E;
 }
 
+// The tiers' two shared steps. exponent_off: the correction of E that moves the scaled value's
+// integer part `whole` into [lo, hi) = [10^(p-1), 10^p) on the retry (-1 below, +1 at or above,
+// 0 inside). rounded: `whole` rounded up when `up`, 9.99...5 carried to 10.0... (E + 1).
+inline int exponent_off(double whole, double lo, double hi) {
+  return whole < lo ? -1 : (whole >= hi ? 1 : 0);
+}
+inline Rounded rounded(std::uint64_t whole, bool up, double hi, int E) {
+  std::uint64_t digits = whole + (up ? 1 : 0);
+  if (digits == static_cast<std::uint64_t>(hi)) {
+    digits /= 10;
+    ++E;
+  }
+  return Rounded{digits, E};
+}
+
 // Tier 1 (above): a in [2^-kProductRange, 2^kProductRange), E its decimal_exponent; nullopt
 // where the product's band leaves the rounding open.
 template <int p>
@@ -122,24 +137,15 @@ std::optional<Rounded> round_by_product(double a, int E) {
     const double q = a * power_of_ten(p - 1 - E);
     const std::int64_t truncated = static_cast<std::int64_t>(q);
     const double whole = static_cast<double>(truncated);
-    if (whole < lo) {
-      --E;
-      continue;
-    }
-    if (whole >= hi) {
-      ++E;
+    if (const int off = exponent_off(whole, lo, hi)) {
+      E += off;
       continue;
     }
     const double fraction = q - whole;  // exact
     const double bound = q * kProductError;
     const double from_half = std::abs(fraction - 0.5);
     if (!(from_half > bound && from_half < 0.5 - bound)) return std::nullopt;
-    std::uint64_t digits = static_cast<std::uint64_t>(truncated) + (fraction > 0.5 ? 1 : 0);
-    if (digits == static_cast<std::uint64_t>(hi)) {  // 9.99...5 rounded up to 10.0...
-      digits /= 10;
-      ++E;
-    }
-    return Rounded{digits, E};
+    return rounded(static_cast<std::uint64_t>(truncated), fraction > 0.5, hi, E);
   }
   return std::nullopt;
 }
@@ -161,21 +167,12 @@ std::optional<Rounded> round_exactly(double a, int E) {
       whole += 1;
       fraction -= 1;
     }
-    if (whole < lo) {
-      --E;
-      continue;
-    }
-    if (whole >= hi) {
-      ++E;
+    if (const int off = exponent_off(whole, lo, hi)) {
+      E += off;
       continue;
     }
     if (std::abs(fraction - 0.5) < kTieMargin) return std::nullopt;
-    std::uint64_t digits = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
-    if (digits == static_cast<std::uint64_t>(hi)) {  // 9.99...5 rounded up to 10.0...
-      digits /= 10;
-      ++E;
-    }
-    return Rounded{digits, E};
+    return rounded(static_cast<std::uint64_t>(whole), fraction > 0.5, hi, E);
   }
   return std::nullopt;
 }
