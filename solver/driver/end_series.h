@@ -29,10 +29,12 @@
 // the w equation, then a Newton step of s on the z equation (dS.z/ds = S.w + beta kappa'
 // S.z^{3/2}). Near the reach of the series the corrections are O(max(|p|, r)) of the last, so
 // the iteration contracts fast; it is run until s and W_f move by a few ulps.
+//
+// Defined in end_series.cc, out of line: the AVX2 + FMA copy of the dop853 run
+// (solver/steppers/dop853_fma.cc) includes this header, and an inline function of shared types
+// compiled there would be one name with two codes (cpu_clone_symbols).
 #pragma once
 
-#include <cmath>
-#include <limits>
 #include <optional>
 
 #include "solver/driver/onset_series.h"
@@ -53,31 +55,8 @@ inline constexpr int kEndSeriesIterations = 40;
 // The match of (z, w) (normalised, z > 0, w < 0) on F_bar = kappa z^{3/2} with beta = 2 zeta,
 // when the series' truncation bound at the matched s is at most `tolerance`; nullopt when the
 // state is not within the series' reach or the iteration does not converge.
-inline std::optional<EndSeriesMatch> match_end_series(double kappa, double beta, double z, double w,
-                                                      double tolerance) {
-  if (!(z > 0 && w < 0 && kappa > 0 && beta >= 0)) return std::nullopt;
-  double W = -w, s = z / W;
-  // the bound at the first estimate: most states of an unloading branch are far outside
-  if (!(onset_series_error_bound(kappa * std::sqrt(W), beta, s) <= tolerance)) return std::nullopt;
-  constexpr double ulps = 8 * std::numeric_limits<double>::epsilon();
-  for (int iteration = 0; iteration < kEndSeriesIterations; ++iteration) {
-    const double k = kappa * std::sqrt(W);
-    const OnsetSeriesState S = onset_series_state(k, -beta, s);
-    const double W_next = -w / S.w;
-    const double slope = S.w + beta * k * S.z * std::sqrt(S.z);
-    const double s_next = s + (z / W_next - S.z) / slope;
-    const bool converged = std::abs(s_next - s) <= ulps * s && std::abs(W_next - W) <= ulps * W;
-    W = W_next;
-    s = s_next;
-    if (!(s > 0 && W > 0)) return std::nullopt;
-    if (converged) {
-      const double k_end = kappa * std::sqrt(W);
-      if (!(onset_series_error_bound(k_end, beta, s) <= tolerance)) return std::nullopt;
-      return EndSeriesMatch{s, W, k_end, onset_series_state(k_end, -beta, s)};
-    }
-  }
-  return std::nullopt;
-}
+std::optional<EndSeriesMatch> match_end_series(double kappa, double beta, double z, double w,
+                                               double tolerance);
 
 // The time left until separation predicted from (z, w) by the same reversal, at the first
 // estimate W_f = -w, s = z / W_f, and the reach of the series there (onset_series_reach with
@@ -86,11 +65,7 @@ struct EndSeriesTarget {
   double s = 0;      // predicted tau_f - tau
   double reach = 0;  // the largest tau_f - tau where the series is accurate to the tolerance
 };
-inline std::optional<EndSeriesTarget> end_series_target(double kappa, double beta, double z,
-                                                        double w, double tolerance) {
-  if (!(z > 0 && w < 0 && kappa > 0 && beta >= 0)) return std::nullopt;
-  const double W = -w;
-  return EndSeriesTarget{z / W, onset_series_reach(kappa * std::sqrt(W), beta, tolerance)};
-}
+std::optional<EndSeriesTarget> end_series_target(double kappa, double beta, double z, double w,
+                                                 double tolerance);
 
 }  // namespace ivv
