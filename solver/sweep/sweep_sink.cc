@@ -512,10 +512,13 @@ void SweepSink::write_rows(std::string_view rows) {
   output_pending_.append(rows);
 }
 
+bool SweepSink::output_due(Flush how) const {
+  return how == Flush::all || options_.stream || output_pending_.size() >= kOutputChunk;
+}
+
 bool SweepSink::write_due(Flush how) const {
   if (!journal_pending_.empty()) return true;  // a journal line is written as soon as it can be
-  if (output_pending_.empty()) return false;
-  return how == Flush::all || options_.stream || output_pending_.size() >= kOutputChunk;
+  return !output_pending_.empty() && output_due(how);
 }
 
 void SweepSink::write_pending(Flush how) {
@@ -530,8 +533,7 @@ void SweepSink::write_pending(Flush how) {
         std::lock_guard lock(mutex_);
         if (!write_due(how)) break;
         journal_out_.swap(journal_pending_);  // journal first: a row in the CSV is journalled
-        if (how == Flush::all || options_.stream || output_pending_.size() >= kOutputChunk)
-          output_out_.swap(output_pending_);
+        if (output_due(how)) output_out_.swap(output_pending_);
       }
       write_out();
     }

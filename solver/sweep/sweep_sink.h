@@ -212,7 +212,9 @@ class SweepSink {
   //   a writing thread to finish first (commit, the end of --resume's read-back).
   enum class Flush { due, all };
   void write_pending(Flush how);
-  bool write_due(Flush how) const;  // caller holds mutex_
+  // The rows are due to be written (how, a stream, or a chunk gathered); caller holds mutex_.
+  bool output_due(Flush how) const;
+  bool write_due(Flush how) const;  // journal lines or due rows pending; caller holds mutex_
   void write_out();                 // caller holds io_mutex_: journal_out_, then output_out_
   static constexpr std::size_t kOutputChunk = std::size_t{1} << 20;  // a 300 x 300 map: 20 writes
   void stream_failed();  // records errno of a failed write to the stream and stops the sweep
