@@ -223,22 +223,95 @@ class ImpactDriver {
         observer_(observer),
         samples_per_step_(samples_per_step),
         stepper_(opt) {}
+  // The same with the stepper given and no observer: one lane of the SIMD lanes
+  // (lane_stepper.h), which the caller steps (begin, after_step, limit_reached below).
+  ImpactDriver(System& sys, const IntegratorOptions& opt, Stepper stepper)
+      : sys_(sys), opt_(opt), observer_(nullptr), samples_per_step_(0), stepper_(stepper) {}
 
   NormalisedRun<System> run() {
     begin();
+    for (;;) {
+      if (std::optional<NormalisedRun<System>> done = limit_reached()) return std::move(*done);
+      if (std::optional<NormalisedRun<System>> done = after_step(stepper_.step(sys_)))
+        return std::move(*done);
+    }
+  }
+
+  // The run driven a step at a time by a caller that steps the stepper itself (the lanes,
+  // lanes_driver.h), as run() does: begin(); then, before each step, limit_reached(), and after
+  // each accepted or failed one, after_step(). Either returns the finished run, or nullopt: take
+  // the next step.
+  //
+  // The start: the stepper started at onset, or past it from the onset series.
+  void begin() {
+    const state_type x = System::initial_state();
+    const T tau = 0;
+    sys_.branch = typename System::history_type{};
+    sys_.tension = law_allows_tension(sys_.law);
+    // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
+    // and separation or capture, with room for a law with more segments
+    run_.events.reserve(8);
+    run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
+    if (observer_) (*observer_)(0.0, x, sys_);
+    if constexpr (requires { Stepper::starts_from_onset_series; }) {
+      if (const std::optional<SeriesStart> start = series_start()) {
+        stepper_.start(sys_, start->tau, start->x);
+        // the solution's own time scale there is tau itself (F ~ tau^{3/2}): the step tried
+        // first is that estimate times the controller's safety factor, as every step it
+        // proposes (step_controller.h). Measured (dop853, rtol 1e-8, 60 x 60 paper map):
+        // tau itself was rejected often enough that 0.9 tau takes 215.5 -> 212.5 right-hand
+        // sides an impact (rejections of a first step 0.40 -> 0.18 an impact)
+        stepper_.propose_step(T(StepControl::safety) * start->tau);
+        if (observer_) emit_series_samples(*start);
+        return;
+      }
+    }
+    stepper_.start(sys_, tau, x);
+  }
+
+  // The run failed by a limit before the next step (max_steps, tau_max); nullopt: step on.
+  std::optional<NormalisedRun<System>> limit_reached() {
+    if (stepper_.steps() >= opt_.max_steps) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
+         << " steps (tau = " << static_cast<double>(stepper_.t1()) << ")";
+      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
+      // dashpot time scale below the contact's), which an explicit stepper must resolve
+      if (System::has_dashpot && sys_.two_zeta > 2.0)
+        os << "; a stiff scene (zeta = " << sys_.two_zeta / 2
+           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
+      else
+        os << "; raise --max-steps or loosen --rtol";
+      return fail(FailureKind::step_limit, os.str());
+    }
+    if (stepper_.t1() > opt_.tau_max) {
+      std::ostringstream os;
+      os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
+      return fail(FailureKind::time_limit, os.str());
+    }
+    return std::nullopt;
+  }
+
+  // The step the stepper has just taken (what its step() returned): the events on it and what
+  // they do (the phase loop of the comment at the top of this file). The finished run, or
+  // nullopt when the impact needs the next step.
+  std::optional<NormalisedRun<System>> after_step(const StepResult& step) {
+    if (!step.ok) return fail(failure_of_step(step.code), step.reason);
+    scan_t0_ = stepper_.t0();
+    scan_x0_ = stepper_.x0();
     try {
-      return phases();
+      return scan_step();
     } catch (const EventLocationError& err) {  // a root finder out of iterations
       return fail(FailureKind::event_location, std::string(Stepper::name) + ": " + err.what());
     }
   }
 
  private:
-  // The phase loop; EventLocationError from the locator or the refinement propagates to run().
-  NormalisedRun<System> phases() {
+  // The events of the last step from (scan_t0_, scan_x0_) on, and what they do; the rest of the
+  // step is scanned again past an event that changes no branch. EventLocationError from the
+  // locator or the refinement propagates to after_step().
+  std::optional<NormalisedRun<System>> scan_step() {
     for (;;) {
-      if (!resume_ && !advance()) return fail(failure_kind_, std::move(failure_));
-      resume_ = false;
       const T t0 = scan_t0_, t1 = stepper_.t1();
       const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
       const Earliest earliest = locate(active);
@@ -255,13 +328,13 @@ class ImpactDriver {
             cap_step_before_separation();
           }
         }
-        continue;
+        return std::nullopt;
       }
       T te = *earliest.t;
       state_type xe;
       if (std::optional<std::string> why = event_state(active, earliest.first, te, xe))
         return fail(FailureKind::event_refinement, std::move(*why));
-      if (retake_to_separation(active.kinds[earliest.first], te, xe)) continue;
+      if (retake_to_separation(active.kinds[earliest.first], te, xe)) return std::nullopt;
       emit_samples(t0, te);
       const Fired fired = fire(active, earliest, te, xe);
       if (fired.law_domain) return fail(FailureKind::law_domain, std::move(*fired.law_domain));
@@ -270,8 +343,7 @@ class ImpactDriver {
         return finish(ImpactStatus::captured, te, xe, *e_bound);
       if constexpr (Stepper::dense_output) {
         if (opt_.locate_events && !fired.branch_changed && te < t1) {
-          resume_ = true;  // scan the rest of this step from the event on
-          scan_t0_ = te;
+          scan_t0_ = te;  // scan the rest of this step from the event on
           scan_x0_ = xe;
           continue;
         }
@@ -280,6 +352,7 @@ class ImpactDriver {
       if constexpr (requires(Stepper & s) { s.scale_proposed_step(T{}); }) {
         if (fired.step_scale != 1) stepper_.scale_proposed_step(fired.step_scale);
       }
+      return std::nullopt;
     }
   }
 
@@ -476,32 +549,6 @@ class ImpactDriver {
     return capture_after_step(sys_, xe, stepper_.steps(), opt_);
   }
 
-  void begin() {
-    const state_type x = System::initial_state();
-    const T tau = 0;
-    sys_.branch = typename System::history_type{};
-    sys_.tension = law_allows_tension(sys_.law);
-    // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
-    // and separation or capture, with room for a law with more segments
-    run_.events.reserve(8);
-    run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
-    if (observer_) (*observer_)(0.0, x, sys_);
-    if constexpr (requires { Stepper::starts_from_onset_series; }) {
-      if (const std::optional<SeriesStart> start = series_start()) {
-        stepper_.start(sys_, start->tau, start->x);
-        // the solution's own time scale there is tau itself (F ~ tau^{3/2}): the step tried
-        // first is that estimate times the controller's safety factor, as every step it
-        // proposes (step_controller.h). Measured (dop853, rtol 1e-8, 60 x 60 paper map):
-        // tau itself was rejected often enough that 0.9 tau takes 215.5 -> 212.5 right-hand
-        // sides an impact (rejections of a first step 0.40 -> 0.18 an impact)
-        stepper_.propose_step(T(StepControl::safety) * start->tau);
-        if (observer_) emit_series_samples(*start);
-        return;
-      }
-    }
-    stepper_.start(sys_, tau, x);
-  }
-
   struct SeriesStart {
     T tau;
     state_type x;
@@ -549,41 +596,6 @@ class ImpactDriver {
       if (!(tau > 0 && std::isfinite(tau) && std::isfinite(kappa))) return std::nullopt;
       return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau)), kappa, beta};
     }
-  }
-
-  // One accepted step; false when a limit is reached or the stepper fails (failure_ says why).
-  bool advance() {
-    if (stepper_.steps() >= opt_.max_steps) {
-      std::ostringstream os;
-      os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
-         << " steps (tau = " << static_cast<double>(stepper_.t1()) << ")";
-      // the advice fits the cause: stiffness comes from a strong dashpot (zeta > 1 puts the
-      // dashpot time scale below the contact's), which an explicit stepper must resolve
-      if (System::has_dashpot && sys_.two_zeta > 2.0)
-        os << "; a stiff scene (zeta = " << sys_.two_zeta / 2
-           << ") needs an implicit integrator (rodas4, odeint-rosenbrock4, gsl-msbdf)";
-      else
-        os << "; raise --max-steps or loosen --rtol";
-      failure_ = os.str();
-      failure_kind_ = FailureKind::step_limit;
-      return false;
-    }
-    if (stepper_.t1() > opt_.tau_max) {
-      std::ostringstream os;
-      os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
-      failure_ = os.str();
-      failure_kind_ = FailureKind::time_limit;
-      return false;
-    }
-    const StepResult step = stepper_.step(sys_);
-    if (!step.ok) {
-      failure_ = step.reason;
-      failure_kind_ = failure_of_step(step.code);
-      return false;
-    }
-    scan_t0_ = stepper_.t0();
-    scan_x0_ = stepper_.x0();
-    return true;
   }
 
   // An explicit stepper whose steps (held by stability against a stiff dashpot) cannot reach
@@ -802,14 +814,11 @@ class ImpactDriver {
   Stepper stepper_;
   NormalisedRun<System> run_;
   EventsFound found_;
-  // A dense-output step goes on past an event that changes no branch: `resume_` says so, and
-  // the scan of the current step starts at (scan_t0_, scan_x0_).
-  bool resume_ = false;
   RootsAtEnd roots_at_end_;
-  int separation_retakes_ = 0;                          // retake_to_separation() so far
-  long unloading_steps_ = 0;                            // stalled() so far
-  std::string failure_;                                 // why advance() could not take a step
-  FailureKind failure_kind_ = FailureKind::integrator;  // and its code
+  int separation_retakes_ = 0;  // retake_to_separation() so far
+  long unloading_steps_ = 0;    // stalled() so far
+  // The scan of the last step starts at (scan_t0_, scan_x0_): its start, or the last event on
+  // it that changed no branch (a dense-output step goes on past such an event).
   T scan_t0_ = 0;
   state_type scan_x0_{};
 };
