@@ -36,6 +36,7 @@
 
 #include "solver/driver/impact_system.h"
 #include "solver/laws/elastoplastic.h"
+#include "solver/steppers/avx2_lanes.h"
 #include "solver/steppers/dop853.h"
 #include "solver/steppers/dop853_lanes.h"
 #include "solver/steppers/dop853_lanes_run.h"
@@ -49,14 +50,6 @@ struct LocalLaw : ElastoplasticLaw {
   explicit LocalLaw(const ElastoplasticLaw& law) : ElastoplasticLaw(law) {}
 };
 using System = ImpactSystem<LocalLaw, true>;
-struct Avx2Lanes : LaneMath<kDop853Lanes> {
-#if IVV_FMA_COPY
-  // all four lanes in one vsqrtpd (correctly rounded, as std::sqrt)
-  [[gnu::always_inline]] static vector sqrt(vector v) {
-    return __builtin_ia32_sqrtpd256(v);
-  }
-#endif
-};
 using Lanes = Dop853Lanes<System, Avx2Lanes>;
 
 System local_system(const PaperLaneSystem& s) {
