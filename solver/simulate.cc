@@ -269,6 +269,11 @@ namespace detail {
 ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
                            std::vector<TrajectoryPoint>* trajectory) {
   ImpactResult r = dispatch(v, integrator, trajectory);
+  finish_full(r, integrator);
+  return r;
+}
+
+void finish_full(ImpactResult& r, IntegratorKind integrator) {
   // (an out-of-range kind was answered by dispatch with a failure; it has no name)
   if (static_cast<std::size_t>(integrator) < integrator_table().size()) {
     r.integrator = to_string(integrator);
@@ -279,7 +284,6 @@ ImpactResult simulate_full(const ValidatedRequest& v, IntegratorKind integrator,
     if (r.failure == FailureKind::none) r.failure = FailureKind::integrator;
     r.reason = std::string(to_string(integrator)) + ": the run failed without a reason";
   }
-  return r;
 }
 }  // namespace detail
 

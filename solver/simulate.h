@@ -108,6 +108,10 @@ namespace detail {
 // The full ODE model of the law with `integrator`, whatever request.model says.
 ImpactResult simulate_full(const ValidatedRequest& request, IntegratorKind integrator,
                            std::vector<TrajectoryPoint>* trajectory);
+// What simulate_full adds to the run's result: the integrator's name, and a failure for a
+// non-finite outcome or for a failure without a reason (a batch in lanes, simulate_batch.h, adds
+// it to the results it made).
+void finish_full(ImpactResult& result, IntegratorKind integrator);
 }  // namespace detail
 
 // Throws InputError for invalid options or an incompatible combination: the one validation

@@ -112,21 +112,33 @@ ScaleBasis scale_basis_for(const DerivedParameters& p) {
     return p.has_yield() ? ScaleBasis::yield : ScaleBasis::hertz;
 }
 
-template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
-ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptions& options,
-                       const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
-  using System = ImpactSystem<Law, Dashpot, T>;
-  // The law's own scales, so that a tolerance means the same for every law and no law depends
-  // on a parameter it does not use (Hertz and Hunt-Crossley: no yield strength).
-  const Scales k = scales(scene, p, scale_basis_for<Law>(p));
-  System sys;
+// The normalised system of one impact of `law` in the scales k (scales_for).
+template <class System>
+void set_up_system(System& sys, const typename System::law_type& law, const DerivedParameters& p,
+                   const Scales& k) {
   sys.law = law;
   sys.length = k.length;
   sys.velocity = k.velocity;
   sys.force_scale = k.force;
   sys.inverse_force_scale = 1.0 / k.force;
   // m* omega/c for the chosen omega (= 2 zeta when omega = omega0)
-  sys.two_zeta = Dashpot ? p.effective_mass / (k.time * p.c) : 0.0;
+  sys.two_zeta = System::has_dashpot ? p.effective_mass / (k.time * p.c) : 0.0;
+}
+
+// The law's own scales, so that a tolerance means the same for every law and no law depends on
+// a parameter it does not use (Hertz and Hunt-Crossley: no yield strength).
+template <class Law>
+Scales scales_for(const Scene& scene, const DerivedParameters& p) {
+  return scales(scene, p, scale_basis_for<Law>(p));
+}
+
+template <template <class> class Stepper, class Law, bool Dashpot, class T = double>
+ImpactResult run_typed(const Law& law, const Scene& scene, const IntegratorOptions& options,
+                       const DerivedParameters& p, std::vector<TrajectoryPoint>* trajectory) {
+  using System = ImpactSystem<Law, Dashpot, T>;
+  const Scales k = scales_for<Law>(scene, p);
+  System sys;
+  set_up_system(sys, law, p, k);
   SampleObserver<System> observer;
   if (trajectory) {
     observer = [trajectory, k](double tau, const typename System::state_type& x, const System& s) {

@@ -269,11 +269,15 @@ ImpactResult run_route(const ValidatedRequest& v, const ModelDecision& d,
 ImpactResult run_model(const ValidatedRequest& v, const ModelDecision& d,
                        std::vector<TrajectoryPoint>* trajectory) {
   ImpactResult r = run_route(v, d, trajectory);
+  finish_route(r, d);
+  return r;
+}
+
+void finish_route(ImpactResult& r, const ModelDecision& d) {
   r.route = to_string(d.route);
   // the integrated route's result was checked by simulate_full, naming its integrator; the
   // other routes made or changed their numbers here
   if (d.route != ModelRoute::integrated) fail_non_finite_outcome(r, to_string(d.route));
-  return r;
 }
 
 ModelRun simulate_model(const ValidatedRequest& v, std::vector<TrajectoryPoint>* trajectory) {

@@ -122,6 +122,9 @@ ModelDecision decide_model(const ValidatedRequest& request, RunOutput output);
 // Runs the decision (route 1-5) for the request.
 ImpactResult run_model(const ValidatedRequest& request, const ModelDecision& decision,
                        std::vector<TrajectoryPoint>* trajectory);
+// What run_model adds to the route's result: the route's name, and a failure for a non-finite
+// outcome of a route that made its numbers itself.
+void finish_route(ImpactResult& result, const ModelDecision& decision);
 // The decision in words; `result` adds what the run found (route 3: the integrated e).
 ModelChoice explain(const ValidatedRequest& request, const ModelDecision& decision,
                     const ImpactResult& result);

@@ -55,6 +55,7 @@ struct LocatorOptions {
   // Bits of the bracket to resolve; 0 means all but 3 of T's digits.
   int bits = 0;
   std::uintmax_t max_iterations = 200;
+  bool operator==(const LocatorOptions&) const = default;
 };
 
 // The precision solve_crossing resolves a bracket to, made once: `tolerance` is

@@ -7,8 +7,8 @@ free of VEX-encoded instructions, except the entry points run_dop853_fma, which 
 where the CPU has AVX2 and FMA. A weak function with AVX2 code would be one of two copies of the
 same name: the linker keeps either, and the baseline callers on a CPU without AVX2 would fault.
 
-The same rule holds for dop853 in lanes (solver/steppers/dop853_lanes.cc), whose entry points are
-baseline code that checks the CPU before calling into the unit: there no exported function may
+The same rule holds for dop853 in lanes (solver/steppers/dop853_lanes.cc) and for impacts driven
+in lanes (solver/simulate_lanes.cc), whose entry points are baseline code that checks the CPU before calling into the unit: there no exported function may
 have VEX code, and some function of the unit (a local one) must, or the unit was not compiled for
 AVX2.
 
@@ -21,7 +21,8 @@ import subprocess
 import sys
 
 # the exported functions allowed AVX code, per object: the FMA copy's entry points; none in lanes
-ENTRIES = {"dop853_fma.cc.o": "run_dop853_fma", "dop853_lanes.cc.o": None}
+ENTRIES = {"dop853_fma.cc.o": "run_dop853_fma", "dop853_lanes.cc.o": None,
+           "simulate_lanes.cc.o": None}
 
 
 def exported_functions(obj, kinds="TWiu"):

@@ -65,6 +65,8 @@ struct IntegratorOptions {
     std::string field;    // e.g. "--rtol"
     std::string message;  // e.g. "must lie in [1e-15, 1e-2] (got 1)"
   };
+  bool operator==(const IntegratorOptions&) const = default;
+
   // nullopt when valid; else the first invalid option.
   std::optional<Invalid> invalid() const;
   // "" when valid; else "<field> <message>".

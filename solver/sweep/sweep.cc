@@ -4,12 +4,14 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
 #include "solver/format.h"
 #include "solver/parallel.h"
 #include "solver/plate/plate_law.h"
+#include "solver/simulate_batch.h"
 
 namespace ivv {
 namespace {
@@ -100,18 +102,68 @@ std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
 }
 
 namespace {
-// Runs point `index` into the worker's batch: the request made in the worker's `point`, the
-// inputs copied from their text, the results formatted into the batch's buffer (no allocation
-// once it has grown).
-void run_sweep_point(const SweepRequest& req, const SweepPointRequests& shared,
-                     const SweepInputColumns& inputs, std::size_t index, SimulationRequest& point,
-                     SweepRowBatch& rows) {
-  const ImpactResult result =
-      simulate_point(req, &shared, index, point, [&] { return point_inputs(req, index); });
+// Point `index`'s row into the worker's batch: the inputs copied from their text, the results
+// formatted into the batch's buffer (no allocation once it has grown).
+void append_row(const SweepInputColumns& inputs, std::size_t index, const ImpactResult& result,
+                SweepRowBatch& rows) {
   std::string& text = rows.begin_row(index);
   const std::size_t start = text.size();
   inputs.append(text, index);
   rows.end_row(append_sweep_csv_results(text, start, result));
+}
+
+// Runs point `index` into the worker's batch, its request made in the worker's `point`.
+void run_sweep_point(const SweepRequest& req, const SweepPointRequests& shared,
+                     const SweepInputColumns& inputs, std::size_t index, SimulationRequest& point,
+                     SweepRowBatch& rows) {
+  append_row(inputs, index,
+             simulate_point(req, &shared, index, point, [&] { return point_inputs(req, index); }),
+             rows);
+}
+
+// What a worker keeps from one batch of points to the next, so that a batch allocates nothing
+// once these have grown: each point's request (made from the base request at first, then by
+// assign_point_request), the validated requests and their results.
+struct BatchScratch {
+  std::vector<SimulationRequest> requests;
+  std::vector<ValidatedRequest> validated;
+  std::vector<std::size_t> validated_at;  // the batch position of each validated request
+  std::vector<ImpactResult> validated_results, results;
+};
+
+// The points of `batch` together (simulate_batch: the paper's law in SIMD lanes), a finite
+// plate's point on its own; then their rows in the batch's order. A point whose run throws is
+// found by running the batch again point by point, where simulate_point names it; a batch that
+// throws where its points one by one do not is an error that says so (never a silent retry).
+void run_sweep_batch(const SweepRequest& req, const SweepPointRequests& shared,
+                     const SweepInputColumns& inputs, std::span<const std::size_t> batch,
+                     BatchScratch& s, SimulationRequest& point, SweepRowBatch& rows) {
+  const std::size_t n = batch.size();
+  if (s.requests.size() < n) s.requests.resize(n, req.base);
+  s.results.resize(n);
+  s.validated.clear();
+  s.validated_at.clear();
+  try {
+    for (std::size_t k = 0; k < n; ++k) {
+      assign_point_request(req, batch[k], s.requests[k]);
+      if (has_finite_plate(s.requests[k].scene)) {
+        s.results[k] = simulate_plate_point(s.requests[k]);
+        continue;
+      }
+      s.validated.push_back(shared.validated(batch[k], s.requests[k]));
+      s.validated_at.push_back(k);
+    }
+    s.validated_results.resize(s.validated.size());
+    simulate_batch(s.validated, s.validated_results);
+  } catch (const std::exception& batch_error) {
+    for (const std::size_t index : batch) run_sweep_point(req, shared, inputs, index, point, rows);
+    throw std::runtime_error(std::string("sweep points ") + std::to_string(batch.front()) + " to " +
+                             std::to_string(batch.back()) +
+                             " failed together but not one by one: " + batch_error.what());
+  }
+  for (std::size_t j = 0; j < s.validated.size(); ++j)
+    std::swap(s.results[s.validated_at[j]], s.validated_results[j]);
+  for (std::size_t k = 0; k < n; ++k) append_row(inputs, batch[k], s.results[k], rows);
 }
 }  // namespace
 
@@ -158,7 +210,8 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
     parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t worker) {
       WorkerClock clock(opt.workers ? &(*opt.workers)[worker] : nullptr, origin);
       SweepRowBatch rows;
-      SimulationRequest point = req.base;  // each point's request made in it
+      SimulationRequest point = req.base;  // a point's request run on its own made in it
+      BatchScratch scratch;
       const auto workers = static_cast<std::size_t>(po.threads);
       std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait, workers);
       for (;;) {
@@ -169,7 +222,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         // take() and deliver_and_take() block until work is available or none is left
         if (batch.empty()) return;
         try {
-          for (const std::size_t i : batch) run_sweep_point(req, shared, inputs, i, point, rows);
+          run_sweep_batch(req, shared, inputs, batch, scratch, point, rows);
         } catch (...) {
           sink.request_stop();  // the other workers take no more: the sweep ends
           sink.deliver(rows);   // the points done before it stay in the journal
