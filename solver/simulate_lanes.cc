@@ -66,7 +66,9 @@ struct Job {
   Scales k{};
 };
 
-void run_lanes(std::span<const LaneImpact> impacts) {
+// Not inlined into its baseline caller (run_dop853_lanes): GCC did, with this function's AVX
+// code, which would run before the CPU is checked (cpu_clone_symbols_lanes_impacts caught it).
+[[gnu::noinline]] void run_lanes(std::span<const LaneImpact> impacts) {
   std::vector<Job> jobs;
   jobs.reserve(impacts.size());
   for (const LaneImpact& impact : impacts) {

@@ -1,5 +1,7 @@
 #include "solver/sweep/sweep.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <exception>
 #include <mutex>
@@ -95,12 +97,6 @@ ImpactResult simulate_point(const SweepRequest& req, const SweepPointRequests* s
 
 }  // namespace
 
-std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
-  const PointInputs in = point_inputs(req, index);
-  SimulationRequest point = req.base;
-  return sweep_csv_row(in, simulate_point(req, nullptr, index, point, [&] { return in; }));
-}
-
 namespace {
 // Point `index`'s row into the worker's batch: the inputs copied from their text, the results
 // formatted into the batch's buffer (no allocation once it has grown).
@@ -112,15 +108,6 @@ void append_row(const SweepInputColumns& inputs, std::size_t index, const Impact
   rows.end_row(append_sweep_csv_results(text, start, result));
 }
 
-// Runs point `index` into the worker's batch, its request made in the worker's `point`.
-void run_sweep_point(const SweepRequest& req, const SweepPointRequests& shared,
-                     const SweepInputColumns& inputs, std::size_t index, SimulationRequest& point,
-                     SweepRowBatch& rows) {
-  append_row(inputs, index,
-             simulate_point(req, &shared, index, point, [&] { return point_inputs(req, index); }),
-             rows);
-}
-
 // What a worker keeps from one batch of points to the next, so that a batch allocates nothing
 // once these have grown: each point's request (made from the base request at first, then by
 // assign_point_request), the validated requests and their results.
@@ -129,15 +116,17 @@ struct BatchScratch {
   std::vector<ValidatedRequest> validated;
   std::vector<std::size_t> validated_at;  // the batch position of each validated request
   std::vector<ImpactResult> validated_results, results;
+  SimulationRequest point;  // a point's request when the batch is run again point by point
 };
 
-// The points of `batch` together (simulate_batch: the paper's law in SIMD lanes), a finite
-// plate's point on its own; then their rows in the batch's order. A point whose run throws is
-// found by running the batch again point by point, where simulate_point names it; a batch that
-// throws where its points one by one do not is an error that says so (never a silent retry).
-void run_sweep_batch(const SweepRequest& req, const SweepPointRequests& shared,
-                     const SweepInputColumns& inputs, std::span<const std::size_t> batch,
-                     BatchScratch& s, SimulationRequest& point, SweepRowBatch& rows) {
+// The results of the points `batch` into s.results, in the batch's order: the points together
+// (simulate_batch: the paper's law in SIMD lanes), a finite plate's point on its own. A point
+// whose run throws is found by running the batch again point by point, where simulate_point
+// names it; a batch that throws where its points one by one do not is an error that says so
+// (never a silent retry).
+// `shared` may be null (one point: making it would cost more than it saves).
+void compute_batch(const SweepRequest& req, const SweepPointRequests* shared,
+                   std::span<const std::size_t> batch, BatchScratch& s) {
   const std::size_t n = batch.size();
   if (s.requests.size() < n) s.requests.resize(n, req.base);
   s.results.resize(n);
@@ -150,22 +139,43 @@ void run_sweep_batch(const SweepRequest& req, const SweepPointRequests& shared,
         s.results[k] = simulate_plate_point(s.requests[k]);
         continue;
       }
-      s.validated.push_back(shared.validated(batch[k], s.requests[k]));
+      s.validated.push_back(shared ? shared->validated(batch[k], s.requests[k])
+                                   : ValidatedRequest::grid_point(req, s.requests[k]));
       s.validated_at.push_back(k);
     }
     s.validated_results.resize(s.validated.size());
     simulate_batch(s.validated, s.validated_results);
   } catch (const std::exception& batch_error) {
-    for (const std::size_t index : batch) run_sweep_point(req, shared, inputs, index, point, rows);
+    s.point = req.base;
+    for (const std::size_t index : batch)
+      simulate_point(req, shared, index, s.point, [&] { return point_inputs(req, index); });
     throw std::runtime_error(std::string("sweep points ") + std::to_string(batch.front()) + " to " +
                              std::to_string(batch.back()) +
                              " failed together but not one by one: " + batch_error.what());
   }
   for (std::size_t j = 0; j < s.validated.size(); ++j)
     std::swap(s.results[s.validated_at[j]], s.validated_results[j]);
-  for (std::size_t k = 0; k < n; ++k) append_row(inputs, batch[k], s.results[k], rows);
 }
+
+// The points of `batch` (compute_batch), then their rows into the worker's batch of rows.
+void run_sweep_batch(const SweepRequest& req, const SweepPointRequests& shared,
+                     const SweepInputColumns& inputs, std::span<const std::size_t> batch,
+                     BatchScratch& s, SweepRowBatch& rows) {
+  compute_batch(req, &shared, batch, s);
+  for (std::size_t k = 0; k < batch.size(); ++k) append_row(inputs, batch[k], s.results[k], rows);
+}
+
+// Points a batch of run_sweep, as run_sweep_points' workers take them (SweepRunOptions::batch).
+constexpr std::size_t kSweepBatch = 32;
 }  // namespace
+
+std::string run_sweep_point(const SweepRequest& req, std::size_t index) {
+  // a batch of one, so that the point's result is the sweep's to the bit (simulate_batch.h)
+  BatchScratch scratch;
+  const std::size_t indices[] = {index};
+  compute_batch(req, nullptr, indices, scratch);
+  return sweep_csv_row(point_inputs(req, index), scratch.results[0]);
+}
 
 std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   validate(req);
@@ -173,16 +183,29 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   const SweepPointRequests shared(req);
   ParallelOptions opt;
   opt.threads = req.threads;
-  opt.progress = req.progress;
   opt.stop = req.stop;
+  // batches of kSweepBatch consecutive points, each computed together (compute_batch)
+  const std::size_t batches = (points.size() + kSweepBatch - 1) / kSweepBatch;
+  if (req.progress)
+    opt.progress = [&](std::size_t done, std::size_t) {
+      req.progress(std::min(done * kSweepBatch, points.size()), points.size());
+    };
   try {
-    parallel_for(points.size(), opt, [&](std::size_t i) {
-      PointInputs in = point_inputs(req, i);
-      SimulationRequest point = req.base;
-      points[i].result = simulate_point(req, &shared, i, point, [&] { return in; });
-      points[i].v0 = in.v0;
-      points[i].zeta = in.zeta;
-      points[i].axes = std::move(in.axes);
+    parallel_for(batches, opt, [&](std::size_t b) {
+      std::array<std::size_t, kSweepBatch> indices{};
+      const std::size_t first = b * kSweepBatch;
+      const std::size_t n = std::min(kSweepBatch, points.size() - first);
+      for (std::size_t k = 0; k < n; ++k) indices[k] = first + k;
+      BatchScratch scratch;  // a batch's own: its requests are made from this sweep's base
+      compute_batch(req, &shared, std::span<const std::size_t>(indices.data(), n), scratch);
+      for (std::size_t k = 0; k < n; ++k) {
+        PointInputs in = point_inputs(req, first + k);
+        SweepPoint& p = points[first + k];
+        p.result = std::move(scratch.results[k]);
+        p.v0 = in.v0;
+        p.zeta = in.zeta;
+        p.axes = std::move(in.axes);
+      }
     });
   } catch (const ParallelError& e) {
     std::rethrow_exception(e.cause());
@@ -210,7 +233,6 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
     parallel_for(static_cast<std::size_t>(po.threads), po, [&](std::size_t worker) {
       WorkerClock clock(opt.workers ? &(*opt.workers)[worker] : nullptr, origin);
       SweepRowBatch rows;
-      SimulationRequest point = req.base;  // a point's request run on its own made in it
       BatchScratch scratch;
       const auto workers = static_cast<std::size_t>(po.threads);
       std::vector<std::size_t> batch = sink.take(opt.batch, SweepSink::WhenAhead::wait, workers);
@@ -222,7 +244,7 @@ void run_sweep_points(const SweepRequest& req, SweepSink& sink, const SweepRunOp
         // take() and deliver_and_take() block until work is available or none is left
         if (batch.empty()) return;
         try {
-          run_sweep_batch(req, shared, inputs, batch, scratch, point, rows);
+          run_sweep_batch(req, shared, inputs, batch, scratch, rows);
         } catch (...) {
           sink.request_stop();  // the other workers take no more: the sweep ends
           sink.deliver(rows);   // the points done before it stay in the journal
