@@ -46,10 +46,12 @@ struct CountRequest {
   // cancel; the CSV rows and the journal stay in).
   bool simulate_only = true;
   // The subcommand, and the functions callgrind collects inside when simulate_only (a
-  // --toggle-collect pattern): a sweep's simulate() by default; a finite plate's `simulate` and
-  // ivv::simulate_plate_impact* (every run of its truncation rule) for the bench's plate rows.
+  // --toggle-collect pattern): a sweep's simulate_batch() by default (its points computed a
+  // batch at a time, the paper's law with a dashpot four at a time in SIMD lanes:
+  // solver/simulate_batch.h); a finite plate's `simulate` and ivv::simulate_plate_impact* (every
+  // run of its truncation rule) for the bench's plate rows.
   std::string command = "sweep -q --threads 1";
-  std::string collect = "ivv::simulate(ivv::ValidatedRequest const&*";
+  std::string collect = "ivv::simulate_batch*";
 };
 
 // Instructions per impact as `request` says, counted by callgrind in a child process.

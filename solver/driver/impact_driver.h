@@ -228,19 +228,20 @@ class ImpactDriver {
   ImpactDriver(System& sys, const IntegratorOptions& opt, Stepper stepper)
       : sys_(sys), opt_(opt), observer_(nullptr), samples_per_step_(0), stepper_(stepper) {}
 
+  // What the run needs after a call of limit_reached() or after_step() below: the next step, or
+  // nothing (the run is done: take_run()).
+  enum class Next { step, done };
+
   NormalisedRun<System> run() {
     begin();
-    for (;;) {
-      if (std::optional<NormalisedRun<System>> done = limit_reached()) return std::move(*done);
-      if (std::optional<NormalisedRun<System>> done = after_step(stepper_.step(sys_)))
-        return std::move(*done);
+    while (limit_reached() == Next::step && after_step(stepper_.step(sys_)) == Next::step) {
     }
+    return take_run();
   }
 
   // The run driven a step at a time by a caller that steps the stepper itself (the lanes,
   // lanes_driver.h), as run() does: begin(); then, before each step, limit_reached(), and after
-  // each accepted or failed one, after_step(). Either returns the finished run, or nullopt: take
-  // the next step.
+  // each accepted or failed one, after_step(), until one says the run is done; then take_run().
   //
   // The start: the stepper started at onset, or past it from the onset series.
   void begin() {
@@ -269,8 +270,8 @@ class ImpactDriver {
     stepper_.start(sys_, tau, x);
   }
 
-  // The run failed by a limit before the next step (max_steps, tau_max); nullopt: step on.
-  std::optional<NormalisedRun<System>> limit_reached() {
+  // The run failed by a limit before the next step (max_steps, tau_max): done.
+  Next limit_reached() {
     if (stepper_.steps() >= opt_.max_steps) {
       std::ostringstream os;
       os << Stepper::name << ": no separation after max_steps = " << opt_.max_steps
@@ -289,13 +290,16 @@ class ImpactDriver {
       os << Stepper::name << ": no separation before tau_max = " << opt_.tau_max;
       return fail(FailureKind::time_limit, os.str());
     }
-    return std::nullopt;
+    return Next::step;
   }
 
+  // The finished run (once, after one of the calls above said done): moved out, no copy of its
+  // events.
+  NormalisedRun<System> take_run() { return std::move(run_); }
+
   // The step the stepper has just taken (what its step() returned): the events on it and what
-  // they do (the phase loop of the comment at the top of this file). The finished run, or
-  // nullopt when the impact needs the next step.
-  std::optional<NormalisedRun<System>> after_step(const StepResult& step) {
+  // they do (the phase loop of the comment at the top of this file).
+  Next after_step(const StepResult& step) {
     if (!step.ok) return fail(failure_of_step(step.code), step.reason);
     scan_t0_ = stepper_.t0();
     scan_x0_ = stepper_.x0();
@@ -310,7 +314,7 @@ class ImpactDriver {
   // The events of the last step from (scan_t0_, scan_x0_) on, and what they do; the rest of the
   // step is scanned again past an event that changes no branch. EventLocationError from the
   // locator or the refinement propagates to after_step().
-  std::optional<NormalisedRun<System>> scan_step() {
+  Next scan_step() {
     for (;;) {
       const T t0 = scan_t0_, t1 = stepper_.t1();
       const ActiveEvents active = active_events(sys_, found_, scan_x0_, stepper_.x1());
@@ -328,13 +332,13 @@ class ImpactDriver {
             cap_step_before_separation();
           }
         }
-        return std::nullopt;
+        return Next::step;
       }
       T te = *earliest.t;
       state_type xe;
       if (std::optional<std::string> why = event_state(active, earliest.first, te, xe))
         return fail(FailureKind::event_refinement, std::move(*why));
-      if (retake_to_separation(active.kinds[earliest.first], te, xe)) return std::nullopt;
+      if (retake_to_separation(active.kinds[earliest.first], te, xe)) return Next::step;
       emit_samples(t0, te);
       const Fired fired = fire(active, earliest, te, xe);
       if (fired.law_domain) return fail(FailureKind::law_domain, std::move(*fired.law_domain));
@@ -352,7 +356,7 @@ class ImpactDriver {
       if constexpr (requires(Stepper & s) { s.scale_proposed_step(T{}); }) {
         if (fired.step_scale != 1) stepper_.scale_proposed_step(fired.step_scale);
       }
-      return std::nullopt;
+      return Next::step;
     }
   }
 
@@ -458,7 +462,7 @@ class ImpactDriver {
 
   // Separation by the series from (t1, x1): the end state is x1 plus what the last s of contact
   // adds (end_series.h), z = 0 and w = -W_f there; the event is recorded as a located one.
-  NormalisedRun<System> separate_by_series(T t1, const state_type& x1, const EndSeriesMatch& m) {
+  Next separate_by_series(T t1, const state_type& x1, const EndSeriesMatch& m) {
     const double W = m.W, W2 = W * W;
     state_type x_f = x1;
     x_f[System::A] = x1[System::A] - W * m.at.a;
@@ -751,7 +755,7 @@ class ImpactDriver {
 
   // F = 0 at (te, xe): a rebound, or, with the impactor still approaching, grazing capture
   // (capture.h) or a failure that says so rather than return a negative COR.
-  NormalisedRun<System> separate(T te, const state_type& xe) {
+  Next separate(T te, const state_type& xe) {
     if (!(xe[System::W] > 0)) return finish(ImpactStatus::separated, te, xe, 0.0);
     const double w = static_cast<double>(xe[System::W]);
     if (const auto e_bound = grazing_capture(System::has_dashpot, w, stepper_.steps(), opt_))
@@ -774,7 +778,7 @@ class ImpactDriver {
     }
   }
 
-  NormalisedRun<System> fail(FailureKind kind, std::string why) {
+  Next fail(FailureKind kind, std::string why) {
     run_.status = ImpactStatus::failed;
     run_.failure = kind;
     run_.reason = std::move(why);
@@ -782,12 +786,11 @@ class ImpactDriver {
     run_.x_end = stepper_.x1();
     run_.branch = sys_.branch;
     run_.steps = stepper_.steps();
-    return std::move(run_);  // the run is done: move, no copy of its events
+    return Next::done;
   }
 
   // A run that ends separated or captured at (tau_end, x_end), checked for consistency.
-  NormalisedRun<System> finish(ImpactStatus status, T tau_end, const state_type& x_end,
-                               double e_bound) {
+  Next finish(ImpactStatus status, T tau_end, const state_type& x_end, double e_bound) {
     run_.status = status;
     run_.tau_end = tau_end;
     run_.x_end = x_end;
@@ -804,7 +807,7 @@ class ImpactDriver {
         run_.reason = std::move(why);
       }
     }
-    return std::move(run_);  // the run is done: move, no copy of its events
+    return Next::done;
   }
 
   System& sys_;

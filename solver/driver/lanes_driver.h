@@ -56,9 +56,8 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
       lanes.begin_impact(i);
       slot.driver.emplace(slot.sys, opt, Dop853LaneStepper<System, Lanes>(lanes, i));
       slot.driver->begin();
-      std::optional<NormalisedRun<System>> done = slot.driver->limit_reached();
-      if (!done) return true;
-      finish(*slot.job, std::move(*done), slot.sys);
+      if (slot.driver->limit_reached() == Driver::Next::step) return true;
+      finish(*slot.job, slot.driver->take_run(), slot.sys);
     }
     slot.job = nullptr;
     slot.driver.reset();
@@ -73,10 +72,10 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
       const LaneAttempt::Kind kind = attempts[i].kind;
       if (kind != LaneAttempt::Kind::accepted && kind != LaneAttempt::Kind::failed) continue;
       Slot& slot = slots[i];
-      std::optional<NormalisedRun<System>> done = slot.driver->after_step(lanes.step_result(i));
-      if (!done) done = slot.driver->limit_reached();
-      if (!done) continue;
-      finish(*slot.job, std::move(*done), slot.sys);
+      if (slot.driver->after_step(lanes.step_result(i)) == Driver::Next::step &&
+          slot.driver->limit_reached() == Driver::Next::step)
+        continue;
+      finish(*slot.job, slot.driver->take_run(), slot.sys);
       if (!load(i)) --busy;
     }
   }
