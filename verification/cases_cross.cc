@@ -2,6 +2,7 @@
 // (mp50), which shares only the laws and event definitions with them.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include "closed_forms/linear_model.h"
@@ -70,6 +71,37 @@ std::vector<IntegratorKind> double_integrators() {
   return out;
 }
 
+// Two runs of each point that differ only in rounding, compared: |e_a - e_b| over the sum of the
+// two runs' stated errors (accumulated_error_bound of each run's steps), its largest value and
+// where; a run that failed or a status that differs ends the comparison (`failure` says so).
+struct PairedRuns {
+  double worst = 0, largest_de = 0;
+  int differing = 0, points = 0;
+  std::string where = "none", failure;
+
+  // false when the comparison ends at this point
+  bool add(const std::string& label, const ImpactResult& a, std::string_view a_name,
+           const ImpactResult& b, std::string_view b_name, const IntegratorOptions& options) {
+    if (!a.ok() || !b.ok() || a.status != b.status) {
+      failure = label + ": " + std::string(to_string(a.status)) + " (" + std::string(a_name) +
+                ") vs " + std::string(to_string(b.status)) + " (" + std::string(b_name) + ") " +
+                a.reason + b.reason;
+      return false;
+    }
+    ++points;
+    const double de = std::abs(a.e - b.e);
+    const double stated =
+        accumulated_error_bound(a.steps, options) + accumulated_error_bound(b.steps, options);
+    differing += de > 0 ? 1 : 0;
+    largest_de = std::max(largest_de, de);
+    if (de / stated > worst) {
+      worst = de / stated;
+      where = label;
+    }
+    return true;
+  }
+};
+
 // The map of `law` (dop853, rtol = atol = 1e-8, v0 0.1-10 m/s log x zeta 0-1, n_v0 x n_zeta
 // points, zeta 0 without the dashpot) run in the baseline machine code and in the fastest this
 // CPU has (solver/steppers/machine_code.h). Measured: the largest |e_fast - e_baseline| over the
@@ -77,10 +109,8 @@ std::vector<IntegratorKind> double_integrators() {
 // status differs fails the case.
 Outcome machine_codes_agree(LawKind law, int n_v0, int n_zeta) {
   const MachineCode fast = machine_code_in_use(MachineCode::fastest);
-  double worst = 0, largest_de = 0;
-  int differing = 0, points = 0;
-  std::string where = "none", failure;
-  for (int i = 0; i < n_v0; ++i) {
+  PairedRuns c;
+  for (int i = 0; i < n_v0 && c.failure.empty(); ++i) {
     for (int j = 0; j < n_zeta; ++j) {
       const double v0 = 0.1 * std::pow(100.0, i / static_cast<double>(n_v0 - 1));
       const double zeta = j / static_cast<double>(n_zeta - 1);
@@ -92,38 +122,24 @@ Outcome machine_codes_agree(LawKind law, int n_v0, int n_zeta) {
       req.options.machine_code = MachineCode::fastest;
       const ImpactResult r = simulate(req);
       const std::string label = "v0=" + fmt(v0) + " zeta=" + fmt(zeta);
-      if (!base.ok() || !r.ok() || r.status != base.status) {
-        failure = label + ": " + std::string(to_string(base.status)) + " (baseline) vs " +
-                  std::string(to_string(r.status)) + " " + base.reason + r.reason;
-        break;
-      }
-      ++points;
-      const double de = std::abs(r.e - base.e);
-      const double stated = accumulated_error_bound(r.steps, req.options) +
-                            accumulated_error_bound(base.steps, req.options);
-      differing += de > 0 ? 1 : 0;
-      largest_de = std::max(largest_de, de);
-      if (de / stated > worst) {
-        worst = de / stated;
-        where = label;
-      }
+      if (!c.add(label, base, "baseline", r, "fastest", req.options)) break;
     }
   }
-  if (!failure.empty()) return at_most(std::nan(""), 1.0, failure);
+  if (!c.failure.empty()) return at_most(std::nan(""), 1.0, c.failure);
   if (fast == MachineCode::baseline)  // no copy here: one code ran twice, bit for bit the same
-    return at_most(largest_de, 0.0,
-                   std::string(to_string(law)) + ", " + std::to_string(points) +
+    return at_most(c.largest_de, 0.0,
+                   std::string(to_string(law)) + ", " + std::to_string(c.points) +
                        " points: this CPU (or IVV_MACHINE_CODE) has only the baseline code, so "
                        "both requests ran it and must agree exactly; largest |de| " +
-                       fmt(largest_de, 3));
-  return at_most(worst, 1.0,
-                 std::string(to_string(law)) + ", " + std::to_string(points) +
+                       fmt(c.largest_de, 3));
+  return at_most(c.worst, 1.0,
+                 std::string(to_string(law)) + ", " + std::to_string(c.points) +
                      " points: " + std::string(machine_code_description(fast)) + " against " +
                      std::string(machine_code_description(MachineCode::baseline)) +
-                     "; e differs at " + std::to_string(differing) + " points, by at most " +
-                     fmt(largest_de, 3) +
+                     "; e differs at " + std::to_string(c.differing) + " points, by at most " +
+                     fmt(c.largest_de, 3) +
                      " (units of v0); the largest |de| over the sum of the two stated errors is " +
-                     fmt(worst, 3) + " at " + where);
+                     fmt(c.worst, 3) + " at " + c.where);
 }
 
 // The requests of one velocity's row of the map of `law` (dop853, the full model, rtol 1e-8 with
@@ -211,47 +227,31 @@ Outcome map_within_stated_error(LawKind law, int n_v0, int n_zeta) {
 // case. Where the lanes do not run (no AVX2 + FMA here, or IVV_MACHINE_CODE=baseline) both are
 // the scalar run and must agree exactly.
 Outcome lanes_agree(int n_v0, int n_zeta) {
-  double worst = 0, largest_de = 0;
-  int differing = 0, points = 0, in_lanes = 0;
-  std::string where = "none", failure;
-  for (int i = 0; i < n_v0 && failure.empty(); ++i) {
+  PairedRuns c;
+  int in_lanes = 0;
+  for (int i = 0; i < n_v0 && c.failure.empty(); ++i) {
     const double v0 = map_velocity(i, n_v0);
     const std::vector<SimulationRequest> row = map_row(LawKind::elastoplastic, v0, n_zeta);
     const std::vector<ImpactResult> results = batch_results(row);
     for (int j = 0; j < n_zeta; ++j) {
-      const ImpactResult& r = results[j];
       const ImpactResult one = simulate(row[j]);
       in_lanes += runs_in_lanes(ValidatedRequest(row[j])) ? 1 : 0;
       const std::string label = "v0=" + fmt(v0) + " zeta=" + fmt(j / (n_zeta - 1.0));
-      if (!r.ok() || !one.ok() || r.status != one.status) {
-        failure = label + ": " + std::string(to_string(r.status)) + " (lanes) vs " +
-                  std::string(to_string(one.status)) + " " + r.reason + one.reason;
-        break;
-      }
-      ++points;
-      const double de = std::abs(r.e - one.e);
-      const double stated = accumulated_error_bound(r.steps, row[j].options) +
-                            accumulated_error_bound(one.steps, row[j].options);
-      differing += de > 0 ? 1 : 0;
-      largest_de = std::max(largest_de, de);
-      if (de / stated > worst) {
-        worst = de / stated;
-        where = label;
-      }
+      if (!c.add(label, results[j], "lanes", one, "one by one", row[j].options)) break;
     }
   }
-  if (!failure.empty()) return at_most(std::nan(""), 1.0, failure);
-  const std::string counts = std::to_string(points) + " points, " + std::to_string(in_lanes) +
-                             " of them in lanes; e differs at " + std::to_string(differing) +
-                             " points, by at most " + fmt(largest_de, 3) + " (units of v0)";
+  if (!c.failure.empty()) return at_most(std::nan(""), 1.0, c.failure);
+  const std::string counts = std::to_string(c.points) + " points, " + std::to_string(in_lanes) +
+                             " of them in lanes; e differs at " + std::to_string(c.differing) +
+                             " points, by at most " + fmt(c.largest_de, 3) + " (units of v0)";
   if (in_lanes == 0)
-    return at_most(largest_de, 0.0,
+    return at_most(c.largest_de, 0.0,
                    counts +
                        ": the lanes do not run here, so both ran the scalar code and must "
                        "agree exactly");
-  return at_most(worst, 1.0,
+  return at_most(c.worst, 1.0,
                  counts + "; the largest |de| over the sum of the two stated errors is " +
-                     fmt(worst, 3) + " at " + where);
+                     fmt(c.worst, 3) + " at " + c.where);
 }
 
 }  // namespace

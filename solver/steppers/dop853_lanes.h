@@ -25,11 +25,12 @@
 // autonomous (the right-hand side does not read tau), which the lanes rely on: a lane's stage
 // times are not formed.
 //
-// Not here (the next piece): the driver. The lanes step and interpolate; events, restarts and a
-// lane that finishes taking the next impact are the caller's (dop853_lanes_run.h says what the
-// driver would need). Fixed-step mode (IntegratorOptions::fixed_step) is not supported: the
-// constructor refuses it. A lane's step is read (x0, x1, f1, interpolate) before the next
-// attempt(), which begins that lane's next step in the same stage arrays.
+// The driver: solver/driver/lanes_driver.h runs one impact a lane, each through its own
+// ImpactDriver with the lane seen as the scalar stepper (dop853_lane_stepper.h); events, restarts
+// and a lane that finishes taking the next impact are the driver's. Fixed-step mode
+// (IntegratorOptions::fixed_step) is not supported: the constructor refuses it. A lane's step is
+// read (x0, x1, f1, interpolate) before the next attempt(), which begins that lane's next step in
+// the same stage arrays.
 //
 // Measured (callgrind, this unit as built, the four paper states of bench/benchmarks.cc, net of
 // the lanes' start): nine steps a lane driven by attempt() (lanes busy in 43 of 44

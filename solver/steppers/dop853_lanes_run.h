@@ -4,16 +4,8 @@
 // machine code: the lane-by-lane comparison (dop853_lanes_test.cc) and the benchmark
 // (bench/benchmarks.cc) run these two side by side.
 //
-// Not wired into the driver. What a driver in lanes would need, read off impact_driver.h: it
-// calls stepper.step(sys) once per accepted step (advance()) and, per lane, then reads t0, t1,
-// x0, x1, f1 (the event roots at the step's end), interpolates on the step (the locator, the
-// event state), restarts the stepper at an event (start(sys, te, xe), propose_step) and reads
-// steps() for max_steps and the capture tests. Per lane it keeps what ImpactDriver keeps per
-// impact: the system with its branch (which the lanes read again at start()), the scan start
-// (scan_t0_, scan_x0_), the roots at the last step's end, the found events, the separation
-// retakes and the unloading step count. With Dop853Lanes::attempt() a lane whose step is
-// complete hands it to its driver state and begins the next, so the lanes need not wait for one
-// another; a lane whose impact ended takes the next map point (start() on that lane).
+// These are the lanes' bare steps, for the comparison and the benchmark; the impacts of a sweep
+// run in lanes through the driver (solver/driver/lanes_driver.h, solver/simulate_batch.h).
 #pragma once
 
 #include <array>
