@@ -327,9 +327,12 @@ class ImpactDriver {
           if (std::optional<std::string> why = stalled(t0, t1))
             return fail(FailureKind::step_limit, std::move(*why));
           if constexpr (std::is_same_v<T, double>) {  // the 50-digit reference: no series
-            if (const std::optional<EndSeriesMatch> end = end_series_match())
-              return separate_by_series(t1, stepper_.x1(), *end);
-            cap_step_before_separation();
+            const std::optional<double> kappa = hertzian_end();
+            if (kappa) {
+              if (const std::optional<EndSeriesMatch> end = end_series_match(*kappa))
+                return separate_by_series(t1, stepper_.x1(), *end);
+            }
+            cap_step_before_separation(kappa);
           }
         }
         return Next::step;
@@ -426,18 +429,16 @@ class ImpactDriver {
     }
   }
 
-  // The end of contact from the last step's end by the series of end_series.h, where that
-  // state is within the series' reach (its truncation bound at most rtol) and the branch's force
-  // there is kappa z^{3/2} (to 1e-10, the rounding of the law's unloading formula). nullopt
-  // otherwise: the integration goes on.
-  std::optional<EndSeriesMatch> end_series_match() const {
-    const std::optional<double> kappa = hertzian_end();
-    if (!kappa) return std::nullopt;
+  // The end of contact from the last step's end by the series of end_series.h on a Hertzian end
+  // (kappa = hertzian_end()), where that state is within the series' reach (its truncation bound
+  // at most rtol) and the branch's force there is kappa z^{3/2} (to 1e-10, the rounding of the
+  // law's unloading formula). nullopt otherwise: the integration goes on.
+  std::optional<EndSeriesMatch> end_series_match(double kappa) const {
     const state_type& x = stepper_.x1();
     const double z = sys_.z(x), beta = System::has_dashpot ? sys_.two_zeta : 0.0;
-    std::optional<EndSeriesMatch> m = match_end_series(*kappa, beta, z, x[System::W], opt_.rtol);
+    std::optional<EndSeriesMatch> m = match_end_series(kappa, beta, z, x[System::W], opt_.rtol);
     if (!m) return std::nullopt;
-    const double hertz = *kappa * z * std::sqrt(z);
+    const double hertz = kappa * z * std::sqrt(z);
     if (!(std::abs(sys_.force(x) - hertz) <= 1e-10 * hertz)) return std::nullopt;
     return m;
   }
@@ -496,19 +497,25 @@ class ImpactDriver {
   //     tolerance, three rejections in the last four steps).
   static constexpr double kEndSeriesLanding = 0.8;
   static constexpr double kKinkShare = 0.5;
-  void cap_step_before_separation() {
+  // `kappa`: hertzian_end() at the step's end.
+  void cap_step_before_separation(const std::optional<double>& kappa) {
     if constexpr (requires(Stepper & s) { s.proposed_step(); }) {
       if (opt_.fixed_step || !opt_.locate_events || sys_.tension) return;
       const state_type& x = stepper_.x1();
       const double z = sys_.z(x), beta = System::has_dashpot ? sys_.two_zeta : 0.0;
       double end_at = 0;
-      if (const std::optional<double> kappa = hertzian_end()) {
+      if (kappa) {
         const std::optional<EndSeriesTarget> target =
             end_series_target(*kappa, beta, z, x[System::W], opt_.rtol);
         if (!target) return;
         end_at = target->s - kEndSeriesLanding * target->reach;
       } else if constexpr (law_separates_at_z_perm<typename System::law_type>()) {
-        const double z_rate = static_cast<double>(sys_.z_rate(x));
+        // dz/dtau at x: a component of f(x) where the stepper holds it (f1), the law not asked
+        double z_rate = 0;
+        if constexpr (requires { stepper_.f1(); })
+          z_rate = stepper_.f1()[System::has_dashpot ? System::Z : System::A];
+        else
+          z_rate = static_cast<double>(sys_.z_rate(x));
         if (!(sys_.branch.z_perm > 0 && z > 0 && z_rate < 0)) return;
         end_at = kKinkShare * z / -z_rate;
       }
