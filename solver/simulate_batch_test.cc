@@ -166,6 +166,37 @@ TEST(SimulateBatch, RequestsWithOtherOptionsRunInTheirOwnLanes) {
   EXPECT_GT(together[1].steps, together[0].steps);  // rtol 1e-11 takes more steps than 1e-8
 }
 
+TEST(SimulateBatch, TheLanesRunWhateverMachineCodeTheProcessUses) {
+  // run_dop853_lanes called directly, so that builds whose fastest machine code is the
+  // baseline (the sanitizer build turns the FMA copy off) run the lanes and their driver too:
+  // the full model of each damped point of the grid, against simulate_full's dop853 run
+  std::vector<SimulationRequest> grid;
+  for (SimulationRequest req : mixed_grid()) {
+    if (req.scene.damping.kind == Damping::Kind::none) continue;
+    req.model = ModelKind::full;
+    grid.push_back(req);
+  }
+  std::vector<ValidatedRequest> validated;
+  for (const SimulationRequest& req : grid) validated.emplace_back(req);
+  std::vector<ImpactResult> results(grid.size());
+  std::vector<detail::LaneImpact> lanes;
+  for (std::size_t i = 0; i < grid.size(); ++i) lanes.push_back({&validated[i], &results[i]});
+  if (!detail::dop853_lanes_impacts_runnable()) {  // a CPU without the lanes' instructions
+    EXPECT_THROW(detail::run_dop853_lanes(lanes), std::logic_error);
+    return;
+  }
+  detail::run_dop853_lanes(lanes);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    detail::finish_full(results[i], IntegratorKind::dop853);
+    const ImpactResult one = detail::simulate_full(validated[i], IntegratorKind::dop853, nullptr);
+    ASSERT_TRUE(results[i].ok()) << results[i].reason;
+    EXPECT_EQ(results[i].status, one.status) << i;
+    const double stated = accumulated_error_bound(results[i].steps, grid[i].options) +
+                          accumulated_error_bound(one.steps, grid[i].options);
+    EXPECT_LE(std::abs(results[i].e - one.e), stated) << i;
+  }
+}
+
 TEST(SimulateBatch, RefusesSpansOfDifferentSizes) {
   const SimulationRequest req = paper_point(1.0, 0.1);
   std::vector<ValidatedRequest> validated{ValidatedRequest(req)};
