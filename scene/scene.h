@@ -127,6 +127,8 @@ struct Scales {
 
 // Throws InputError naming the first invalid field and its accepted range.
 void validate(const Scene& scene);
+// validate(scene), and derive(scene) of the valid scene (computed once for both).
+DerivedParameters validate_and_derive(const Scene& scene);
 
 // Throws InputError unless every derived parameter (E*, K_h, z_y, K_y, omega0, v_y, and zeta
 // and c with a dashpot), every scale of paper eq. 26 and the energy scale of the contact
@@ -135,6 +137,8 @@ void validate(const Scene& scene);
 // from the paper's Table 1 value: the likeliest culprit of an overflow or underflow. Called
 // by validate().
 void validate_derived(const Scene& scene);
+// The same with derive(scene) already computed (`derived`).
+void validate_derived(const Scene& scene, const DerivedParameters& derived);
 
 // Scene files are read up to this size [bytes]: a scene is a few hundred bytes, so 1 MiB leaves
 // room for comments and refuses an endless input such as /dev/zero.

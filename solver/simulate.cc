@@ -168,7 +168,7 @@ void validate(const SimulationRequest& req) {
 }
 
 ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req) {
-  validate(req.scene);
+  derived_ = validate_and_derive(req.scene);
   if (req.scene.damping.kind == Damping::Kind::structure &&
       req.scene.damping.structure.finite_plate())
     throw InputError("structure.length_x",
@@ -190,7 +190,6 @@ ValidatedRequest::ValidatedRequest(const SimulationRequest& req) : request_(&req
                                     "; give one or the other");
   if (req.law == LawKind::expression && req.expression.force.empty())
     throw InputError("--force", "the expression law needs a force expression");
-  derived_ = derive(req.scene);
   bool rate_dependent = law.rate_dependent;
   if (req.law == LawKind::expression) {
     expression_ = detail::compile_expression_law(req, derived_);  // once: the run uses it too
