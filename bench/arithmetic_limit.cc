@@ -155,4 +155,23 @@ InstructionCount count_instructions(const CountRequest& req) {
   return out;
 }
 
+std::optional<ImpactCostModel> fit_impact_cost(std::span<const ImpactRun> runs) {
+  if (runs.size() < 3) return std::nullopt;
+  double mean_x = 0.0, mean_y = 0.0;
+  for (const ImpactRun& r : runs) {
+    mean_x += r.rhs_evaluations;
+    mean_y += r.us;
+  }
+  mean_x /= static_cast<double>(runs.size());
+  mean_y /= static_cast<double>(runs.size());
+  double sxx = 0.0, sxy = 0.0;  // centred sums: no cancellation of large products
+  for (const ImpactRun& r : runs) {
+    sxx += (r.rhs_evaluations - mean_x) * (r.rhs_evaluations - mean_x);
+    sxy += (r.rhs_evaluations - mean_x) * (r.us - mean_y);
+  }
+  if (!(sxx > 0.0)) return std::nullopt;  // one evaluation count: no slope
+  const double slope = sxy / sxx;         // [us] per evaluation
+  return ImpactCostModel{mean_y - slope * mean_x, slope * 1e3, static_cast<int>(runs.size())};
+}
+
 }  // namespace ivv::bench

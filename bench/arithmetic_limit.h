@@ -13,6 +13,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -56,5 +57,24 @@ struct CountRequest {
 
 // Instructions per impact as `request` says, counted by callgrind in a child process.
 InstructionCount count_instructions(const CountRequest& request);
+
+// One integrator's impact time split into what grows with its right-hand-side evaluations and
+// what does not, from its runs of one impact at several tolerances in one bench run: the least-
+// squares line time = fixed + per_rhs x evaluations. `fixed` is what an impact pays whatever its
+// step count (validation, set-up, locating its events on the dense output, the result); per_rhs
+// covers an evaluation with its share of the stage arithmetic and the step control (a dop853
+// step is 12 evaluations). The limit above counts the evaluations alone, so the two together
+// say which part of the distance to it is where.
+struct ImpactCostModel {
+  double fixed_us = 0.0;    // [us] the intercept
+  double per_rhs_ns = 0.0;  // [ns] the slope
+  int runs = 0;             // the runs fitted
+};
+struct ImpactRun {
+  double rhs_evaluations = 0.0;
+  double us = 0.0;  // median time of one impact [us]
+};
+// nullopt with fewer than three runs or fewer than two distinct evaluation counts (no line).
+std::optional<ImpactCostModel> fit_impact_cost(std::span<const ImpactRun> runs);
 
 }  // namespace ivv::bench

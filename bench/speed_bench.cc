@@ -388,7 +388,8 @@ void calibration_targets(const BenchOptions& options, BenchReport& rep,
 // ivv's best time at |de|/e <= 1e-8 on the paper scene against a peer's (the ratio table's row),
 // as ivv time / peer time: the target "ivv >= N x faster" is a bound 1/N on it.
 void describe_paper_point(BenchTarget& t, const SpeedPoint* best, const LimitInputs& in,
-                          double unit_per_us = 1.0);
+                          double unit_per_us = 1.0,
+                          const std::vector<SpeedPoint>* points = nullptr);
 
 // At 1e-6, where a lower order may be the faster choice, ivv >= 3x the same idiom, with the
 // limit and the instructions of ivv's fastest point there.
@@ -822,11 +823,34 @@ void measure_stiff_scene(const Timing& timing, const std::vector<double>& rtols,
 // The limit and the instruction count of a per-impact target reached by `best` (the paper scene,
 // elastoplastic).
 // `unit_per_us` converts the limit's time into the target's unit (1: us).
+// The fixed part of `best`'s time and its part per evaluation (fit_impact_cost) over the runs of
+// its integrator on its scene and law in this run, as a sentence; empty where there is no line.
+std::string cost_split_text(const std::vector<SpeedPoint>& points, const SpeedPoint& best) {
+  std::vector<ImpactRun> runs;
+  for (const SpeedPoint& p : points)
+    if (p.ok && p.scene == best.scene && p.law == best.law && p.integrator == best.integrator &&
+        std::isfinite(p.us_per_impact))
+      runs.push_back({static_cast<double>(p.rhs_evals), p.us_per_impact});
+  const std::optional<ImpactCostModel> fit = fit_impact_cost(runs);
+  if (!fit) return {};
+  const double growing = fit->per_rhs_ns * 1e-3 * static_cast<double>(best.rhs_evals);
+  return "; a line through " + best.integrator + "'s " + std::to_string(fit->runs) +
+         " tolerances in this run (least squares, a fit: the time per evaluation grows at tight "
+         "tolerances) gives " +
+         fmt(fit->fixed_us, 3) + " us + " + fmt(fit->per_rhs_ns, 3) +
+         " ns an evaluation: at rtol " + fmt(best.rtol) + " the part that grows with the " +
+         std::to_string(best.rhs_evals) + " evaluations is " + fmt(growing, 3) + " us of the " +
+         fmt(best.us_per_impact, 3) + " us, the intercept " + fmt(fit->fixed_us, 3) +
+         " us what an impact pays whatever its steps (validation, set-up, the events located on "
+         "the dense output, the result)";
+}
+
 void describe_paper_point(BenchTarget& t, const SpeedPoint* best, const LimitInputs& in,
-                          double unit_per_us) {
+                          double unit_per_us, const std::vector<SpeedPoint>* points) {
   if (!best) return;
   set_limit(t, static_cast<double>(best->rhs_evals), in.rhs_ns, unit_per_us,
             best->integrator + " at rtol " + fmt(best->rtol));
+  if (points) t.limit_how += cost_split_text(*points, *best);
   if (in.ivv.empty()) return;
   constexpr int kPoints = 100;
   const std::string rtol = fmt(best->rtol, 17);
@@ -857,11 +881,13 @@ void add_paper_targets(const Timing& timing, const LimitInputs& limits, BenchRep
       "fastest point with err_e <= 1e-8 (" + who8 + "), elastoplastic, v0 = 1 m/s, zeta = 0.1",
       "per-impact"));
   describe_paper_point(rep.targets.back(),
-                       best_point(rep.points, paper, "elastoplastic", 1e-8, false), limits);
+                       best_point(rep.points, paper, "elastoplastic", 1e-8, false), limits, 1.0,
+                       &rep.points);
   rep.targets.push_back(target("|de|/e <= 1e-12 on the paper scene", 15.0, "us", t12,
                                "fastest point with err_e <= 1e-12 (" + who12 + ")", "per-impact"));
   describe_paper_point(rep.targets.back(),
-                       best_point(rep.points, paper, "elastoplastic", 1e-12, false), limits);
+                       best_point(rep.points, paper, "elastoplastic", 1e-12, false), limits, 1.0,
+                       &rep.points);
   {
     const Scene s = paper_at(1.0, 0.1);
     const DerivedParameters p = derive(s);
