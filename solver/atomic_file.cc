@@ -1,14 +1,18 @@
 #include "solver/atomic_file.h"
 
+#include <dirent.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <stdexcept>
+#include <string_view>
 
 #include "scene/input_error.h"
 
@@ -208,25 +212,31 @@ void write_file_atomically(const fs::path& path, const std::function<void(std::o
 }
 
 std::size_t remove_stale_temporaries(const fs::path& path) {
-  std::error_code ec;
   const fs::path target = path.has_parent_path() ? path : fs::path(".") / path;
   const std::string prefix = temporary_prefix(target);
+  // readdir's names, compared before any path is built: a directory_iterator made a path (and
+  // a filename string) for every entry, ~6,600 instructions an entry; in a /tmp of 626 entries
+  // the two scans of a sweep's set-up took 4.1M instructions, serial (callgrind)
+  const std::unique_ptr<DIR, int (*)(DIR*)> dir(opendir(target.parent_path().c_str()), closedir);
+  if (!dir) return 0;
   std::size_t removed = 0;
-  for (const fs::directory_entry& entry : fs::directory_iterator(target.parent_path(), ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
+  while (const dirent* entry = readdir(dir.get())) {
+    const std::string_view name(entry->d_name);
+    if (!name.starts_with(prefix)) continue;
     // ".NAME.tmp" PID "-" N
-    const std::string rest = name.substr(prefix.size());
+    const std::string_view rest = name.substr(prefix.size());
     const std::size_t dash = rest.find('-');
-    if (dash == std::string::npos || dash == 0) continue;
+    if (dash == std::string_view::npos || dash == 0) continue;
     if (rest.find_first_not_of("0123456789") != dash) continue;
-    if (rest.find_first_not_of("0123456789", dash + 1) != std::string::npos) continue;
-    const long pid = std::stol(rest.substr(0, dash));
+    if (rest.find_first_not_of("0123456789", dash + 1) != std::string_view::npos) continue;
+    long pid = 0;
+    if (std::from_chars(rest.data(), rest.data() + dash, pid).ec != std::errc()) continue;
     if (pid <= 0 || pid == static_cast<long>(getpid())) continue;
     // kill(pid, 0) fails with ESRCH only when no such process exists
     if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
-    if (entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
+    const fs::path file = target.parent_path() / std::string(name);
+    if (fs::is_regular_file(file, ignored) && fs::remove(file, ignored)) ++removed;
   }
   return removed;
 }
