@@ -135,9 +135,7 @@ DerivedParameters validate_and_derive(const Scene& scene);
 // spring, K_h (v0/omega0)^{5/2} [J], are finite and > 0, i.e. representable in double. The
 // field named is the input the failing quantity depends on that lies farthest (in decades)
 // from the paper's Table 1 value: the likeliest culprit of an overflow or underflow. Called
-// by validate().
-void validate_derived(const Scene& scene);
-// The same with derive(scene) already computed (`derived`).
+// by validate() and validate_and_derive() with `derived` = derive(scene), computed once.
 void validate_derived(const Scene& scene, const DerivedParameters& derived);
 
 // Scene files are read up to this size [bytes]: a scene is a few hundred bytes, so 1 MiB leaves

@@ -158,10 +158,6 @@ std::pair<double, double> damping_input(const Scene& s) {
 }
 }  // namespace
 
-void validate_derived(const Scene& s) {
-  validate_derived(s, derive(s));
-}
-
 void validate_derived(const Scene& s, const DerivedParameters& p) {
   // bit i of `depends` set: input i of throw_unrepresentable enters the quantity
   auto check = [&](const char* name, double value, unsigned depends) {

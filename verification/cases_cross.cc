@@ -257,20 +257,23 @@ Outcome lanes_agree(int n_v0, int n_zeta) {
 
 }  // namespace
 
+// Why two runs of one map may differ by the sum of their stated errors (the reason of every case
+// comparing two such maps).
+constexpr const char* kStatedErrorSum =
+    "each run's e is within its stated error of the exact e, accumulated_error_bound "
+    "(solver/consistency.h: 10 x steps x 2 (atol + 2 rtol), the bound every run's ledger is held "
+    "to), so the two differ by at most the sum of their stated errors: measured over that sum, "
+    "at most 1";
+
 // The maps that two runs compute by the same method and differ only in rounding: the machine
 // codes, and the lanes against one impact at a time.
 void register_rounding_cases(Registry& reg) {
-  const char* stated_error =
-      "each run's e is within its stated error of the exact e, accumulated_error_bound "
-      "(solver/consistency.h: 10 x steps x 2 (atol + 2 rtol), the bound every run's ledger is held "
-      "to), so the two differ by at most the sum of their stated errors: measured over that sum, "
-      "at most 1";
   const std::string machine_code_reason =
       std::string(
           "both runs integrate the same equations by the same method (dop853) and differ "
           "only in rounding (a fused multiply-add rounds once where the baseline rounds "
           "twice); ") +
-      stated_error;
+      kStatedErrorSum;
   reg.add({"cross.machine-code.elastoplastic-map",
            "The paper map (elastoplastic, dop853, rtol 1e-8, 30 x 30 points v0 0.1-10 m/s x zeta "
            "0-1) in the AVX2 + FMA machine code vs the baseline x86-64 code",
@@ -288,18 +291,16 @@ void register_rounding_cases(Registry& reg) {
            std::string("both runs integrate the same equations by the same method (dop853), the "
                        "lanes four impacts at once on vectors, whose fused multiply-adds fall "
                        "where the scalar run's need not; ") +
-               stated_error,
+               kStatedErrorSum,
            Cost::quick, [] { return lanes_agree(30, 30); }});
 }
 
 void register_cross_implementation_cases(Registry& reg) {
   register_rounding_cases(reg);
-  const char* map_reason =
-      "each run's e is within its stated error of the exact e, accumulated_error_bound "
-      "(solver/consistency.h: 10 x steps x 2 (atol + 2 rtol), the bound every run's ledger is held "
-      "to), so the two differ by at most the sum of their stated errors: measured over that "
-      "sum, at most 1. It holds what the driver does to an impact (event location, step sizes "
-      "after events, capture) to the accuracy the map states, point by point";
+  const std::string map_reason =
+      std::string(kStatedErrorSum) +
+      ". It holds what the driver does to an impact (event location, step sizes after events, "
+      "capture) to the accuracy the map states, point by point";
   reg.add({"convergence.map.elastoplastic",
            "The paper map (elastoplastic, dop853, 30 x 30 points v0 0.1-10 m/s x zeta 0-1) at "
            "rtol 1e-8 vs the same map at rtol 1e-12",
