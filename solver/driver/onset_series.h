@@ -6,7 +6,8 @@
 // ninth derivative of the state an eighth-order method needs grows like t^{-15/2}, and an
 // adaptive step leaves t = 0 in many small steps (8 of 15 for the paper scene at rtol 1e-8).
 // The series below is exact in the limit and is used up to the tau where its truncation bound
-// is below the integrator's tolerance; the integrator starts there.
+// is below the integrator's tolerance, or to the end of the Hertzian onset (the yield) where
+// that comes first; the integrator starts there (impact_driver.h: series_start).
 //
 // Equations, in the normalised variables of impact_system.h (tau = omega t, a and z in v0/omega,
 // w = a' in v0, F_bar = F/(m v0 omega); kappa = K (v0/omega)^{3/2} / (m v0 omega) so that

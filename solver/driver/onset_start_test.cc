@@ -1,0 +1,113 @@
+// Where an error-controlled integration starts (impact_driver.h: series_start): from the onset
+// series, at the yield itself when the series reaches it (the yield fired at the series'
+// state), else inside the Hertzian onset with the yield located by the integrator. Either way
+// the run agrees with the 50-digit integrator, which never uses the series.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "solver/simulate.h"
+
+namespace ivv {
+namespace {
+
+constexpr double kRtol = 1e-8;
+// dop853's stated error of e in units of v0 (solver/choice/integrator_choice.h: 200 rtol), as
+// separation_step_test.cc.
+constexpr double kStatedError = 200 * kRtol;
+// The yield time from the series: its truncation bound there is at most rtol (relative, on the
+// impulse and the displacement, onset_series.h), and the 50-digit run locates its yield to its
+// own far tighter tolerance; the root on either side is resolved to a few ulps.
+constexpr double kYieldTimeError = kRtol;  // relative
+
+SimulationRequest request(double v0, double zeta, IntegratorKind integrator) {
+  SimulationRequest req;
+  req.scene = paper_scene();
+  req.scene.velocity = v0;
+  req.scene.damping = zeta > 0 ? Damping::ratio(zeta) : Damping::none();
+  req.law = LawKind::elastoplastic;
+  req.model = ModelKind::full;
+  req.integrator = integrator;
+  req.options.rtol = req.options.atol = kRtol;
+  return req;
+}
+
+std::optional<ImpactEvent> yield_of(const ImpactResult& r) {
+  for (const ImpactEvent& ev : r.events)
+    if (ev.kind == EventKind::yield) return ev;
+  return std::nullopt;
+}
+
+struct TracedRun {
+  ImpactResult result;
+  std::vector<TrajectoryPoint> trajectory;
+};
+
+TracedRun run_dop853(double v0, double zeta) {
+  TracedRun run;
+  run.result = simulate(request(v0, zeta, IntegratorKind::dop853), &run.trajectory);
+  return run;
+}
+
+// The samples on the series come first, four of them (samples_per_step) up to where the
+// integration starts: the fifth trajectory point (after onset) is that start.
+double integration_start(const TracedRun& run) {
+  return run.trajectory.at(4).t;
+}
+
+void expect_as_the_reference(const TracedRun& run, double v0, double zeta) {
+  const ImpactResult ref = simulate(request(v0, zeta, IntegratorKind::mp50));
+  ASSERT_TRUE(ref.separated()) << ref.reason;
+  ASSERT_TRUE(run.result.separated()) << run.result.reason;
+  EXPECT_NEAR(run.result.e, ref.e, kStatedError) << "v0 = " << v0 << ", zeta = " << zeta;
+  const std::optional<ImpactEvent> y = yield_of(run.result), y_ref = yield_of(ref);
+  ASSERT_TRUE(y && y_ref);
+  EXPECT_NEAR(y->t, y_ref->t, kYieldTimeError * y_ref->t) << "v0 = " << v0 << ", zeta = " << zeta;
+}
+
+// The paper impact (v0 = 1 m/s, zeta = 0.1): the series' bound at the yield is ~1e-11, so the
+// integration starts at the yield, which is fired there, on the spring's far side of z_y.
+TEST(OnsetStart, TheSeriesCarriesThePaperImpactToTheYield) {
+  const TracedRun run = run_dop853(1.0, 0.1);
+  const std::optional<ImpactEvent> y = yield_of(run.result);
+  ASSERT_TRUE(y);
+  EXPECT_DOUBLE_EQ(integration_start(run), y->t);
+  const double z_y = derive(paper_scene()).z_y;
+  EXPECT_GE(y->z, z_y * (1 - 1e-15));  // the rounding of z back into metres
+  EXPECT_NEAR(y->z, z_y, 1e-14 * z_y);
+  expect_as_the_reference(run, 1.0, 0.1);
+}
+
+// Across the plastic range, with and without a dashpot, the run that starts at the yield agrees
+// with the 50-digit one.
+TEST(OnsetStart, FromTheYieldAsTheReferenceAcrossThePlasticRange) {
+  for (double v0 : {2.0, 5.0, 10.0})
+    for (double zeta : {0.0, 0.3}) {
+      const TracedRun run = run_dop853(v0, zeta);
+      const std::optional<ImpactEvent> y = yield_of(run.result);
+      ASSERT_TRUE(y) << "v0 = " << v0 << ", zeta = " << zeta;
+      EXPECT_DOUBLE_EQ(integration_start(run), y->t) << "v0 = " << v0 << ", zeta = " << zeta;
+      expect_as_the_reference(run, v0, zeta);
+    }
+}
+
+// Nearer the yield velocity (v_y = 0.131 m/s) the impactor has lost more of its speed by z_y:
+// at 0.3 m/s the series' bound there is above rtol, and just above v_y far above it. The
+// integration then starts inside the onset (at most half of z_y) and the integrator locates
+// the yield; the run is as accurate.
+TEST(OnsetStart, AYieldPastTheSeriesReachIsLocatedByTheIntegrator) {
+  // (a dashpot of zeta = 0.3 keeps z below z_y at 0.135 m/s)
+  for (const auto& [v0, zeta] : {std::pair{0.135, 0.0}, {0.3, 0.0}, {0.3, 0.3}}) {
+    const TracedRun run = run_dop853(v0, zeta);
+    const std::optional<ImpactEvent> y = yield_of(run.result);
+    ASSERT_TRUE(y) << "v0 = " << v0 << ", zeta = " << zeta;
+    EXPECT_LT(integration_start(run), y->t) << "v0 = " << v0 << ", zeta = " << zeta;
+    expect_as_the_reference(run, v0, zeta);
+  }
+}
+
+}  // namespace
+}  // namespace ivv
