@@ -622,39 +622,31 @@ class ImpactDriver {
       const double beta = System::has_dashpot ? sys_.two_zeta : 0.0;
       const double reach = onset_series_reach(kappa, beta, opt_.rtol);
       if (!(reach > 0 && std::isfinite(reach) && std::isfinite(kappa))) return std::nullopt;
-      if (const std::optional<double> tau_end = series_segment_end(kappa, beta, reach, *onset))
-        return SeriesStart{*tau_end, series_state(onset_series_state(kappa, beta, *tau_end)), kappa,
-                           beta, true};
+      if (const std::optional<OnsetSeriesState> end =
+              series_segment_end(kappa, beta, reach, *onset))
+        return SeriesStart{end->tau, series_state(*end), kappa, beta, true};
       const double tau = std::min(reach, 0.5 * onset->z_end / L);
       if (!(tau > 0)) return std::nullopt;
       return SeriesStart{tau, series_state(onset_series_state(kappa, beta, tau)), kappa, beta};
     }
   }
 
-  // The tau at which the series' z reaches the end of the Hertzian onset (the yield of the
+  // The series' state where z reaches the end of the Hertzian onset (the yield of the
   // elastoplastic law), where that is within the series' reach: the integration then starts
   // there, at the event, instead of from half of it, meeting it on its second or third step
   // and throwing away the part of that step past it. Paper scene, dop853, rtol 1e-8: the
   // series' bound at the yield is ~1e-11, and 123 -> 119 right-hand sides; the 300 x 300 map
-  // (rtol 1e-8) 1,154,692 -> 1,070,465 accepted steps. Solved on the series for z = z_end by
-  // solve_crossing (the time on the event's far side); z < tau once the impactor has lost any
-  // speed, so tau = z_end is before the crossing. nullopt where the onset has no end, the end is
-  // past the reach, or the law's first segment does not end there; also where the root finder gives
-  // up (it cannot on this monotone z): the integrator then meets the yield as an event, as before.
-  std::optional<double> series_segment_end(double kappa, double beta, double reach,
-                                           const HertzianOnset& onset) const {
-    const double z_end = onset.z_end / sys_.length;
+  // (rtol 1e-8) 1,154,692 -> 1,070,465 accepted steps. Solved on the series by Newton's method
+  // (onset_series_at_z: four evaluations of the series on the paper impact, where the
+  // bracketing root finder of the events took eight and cost the step's saving back). nullopt
+  // where the onset has no end, the end is past the reach, or the law's first segment does not
+  // end there: the integrator then meets the yield as an event, as before.
+  std::optional<OnsetSeriesState> series_segment_end(double kappa, double beta, double reach,
+                                                     const HertzianOnset& onset) const {
     const std::optional<double> segment_end = law_segment_end(sys_.law, sys_.branch);
-    if (!std::isfinite(z_end) || !(z_end < reach) || !segment_end || *segment_end != onset.z_end)
+    if (!std::isfinite(onset.z_end) || !segment_end || *segment_end != onset.z_end)
       return std::nullopt;
-    auto g = [&](double tau) { return onset_series_state(kappa, beta, tau).z - z_end; };
-    const double g_lo = g(z_end), g_hi = g(reach);
-    if (!(g_lo < 0 && g_hi >= 0)) return std::nullopt;
-    try {
-      return solve_crossing(g, z_end, reach, g_lo, g_hi, Direction::rising, opt_.locator);
-    } catch (const EventLocationError&) {
-      return std::nullopt;
-    }
+    return onset_series_at_z(kappa, beta, onset.z_end / sys_.length, reach);
   }
 
   // An explicit stepper whose steps (held by stability against a stiff dashpot) cannot reach

@@ -74,4 +74,23 @@ double onset_series_reach(double kappa, double beta, double tolerance) {
   return tau;
 }
 
+std::optional<OnsetSeriesState> onset_series_at_z(double kappa, double beta, double z_target,
+                                                  double reach) {
+  if (!(z_target > 0 && z_target < reach && kappa > 0 && beta >= 0)) return std::nullopt;
+  constexpr double ulps = 4 * std::numeric_limits<double>::epsilon();
+  const double leading = kappa * z_target * std::sqrt(z_target);
+  double tau = z_target * (1 + leading * (0.4 * beta + (4.0 / 35.0) * z_target));
+  for (int k = 0; k < kOnsetNewtonIterations; ++k) {
+    if (!(tau > 0 && tau <= reach)) return std::nullopt;
+    const OnsetSeriesState S = onset_series_state(kappa, beta, tau);
+    const double slope = S.w - beta * kappa * S.z * std::sqrt(S.z);
+    if (!(slope > 0)) return std::nullopt;
+    const double step = (S.z - z_target) / slope;
+    if (std::abs(step) <= ulps * tau && S.z >= z_target) return S;
+    // short of the target by less than Newton's step can resolve: one ulp up
+    tau = step < 0 && tau - step == tau ? std::nextafter(tau, reach) : tau - step;
+  }
+  return std::nullopt;
+}
+
 }  // namespace ivv

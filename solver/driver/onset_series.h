@@ -35,6 +35,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 namespace ivv {
 
@@ -61,5 +62,16 @@ double onset_series_dashpot_work_error_bound(double kappa, double beta, double t
 
 // The largest tau at which onset_series_error_bound(kappa, beta, tau) <= tolerance.
 double onset_series_reach(double kappa, double beta, double tolerance);
+
+// The series' state where its z first equals z_target (> 0), when that tau is at most `reach`:
+// Newton's method on z(tau) = z_target with dz/dtau = w - beta kappa z^{3/2} (the equations
+// above), from the leading terms inverted, tau = z (1 + kappa z^{3/2} (2 beta/5 + 4 z/35)),
+// whose error is second order in (p, r); until the step is within 4 ulps of tau, and then on
+// the far side (z >= z_target). Three or four evaluations of the series where the reach is set
+// by a tolerance of 1e-8 or tighter. nullopt past the reach, where z stops rising, or after
+// kOnsetNewtonIterations.
+inline constexpr int kOnsetNewtonIterations = 12;
+std::optional<OnsetSeriesState> onset_series_at_z(double kappa, double beta, double z_target,
+                                                  double reach);
 
 }  // namespace ivv

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "solver/driver/event_locator.h"
+#include "solver/driver/onset_series.h"
 #include "solver/simulate.h"
 
 namespace ivv {
@@ -107,6 +110,33 @@ TEST(OnsetStart, AYieldPastTheSeriesReachIsLocatedByTheIntegrator) {
     EXPECT_LT(integration_start(run), y->t) << "v0 = " << v0 << ", zeta = " << zeta;
     expect_as_the_reference(run, v0, zeta);
   }
+}
+
+// onset_series_at_z, the root the start above is found by: the series' z there is on the far
+// side of the target and within the 4 ulps Newton's step is resolved to (a few more for the
+// rounding of z itself), at the time the bracketing root finder of the events finds on the same
+// z(tau); past the reach there is no answer.
+constexpr double kUlp = std::numeric_limits<double>::epsilon();
+TEST(OnsetSeriesAtZ, FarSideOfTheTargetAtTheBracketedRoot) {
+  for (double kappa : {0.3, 1.0, 4.0})
+    for (double beta : {0.0, 0.2, 2.0})
+      for (double fraction : {0.2, 0.6, 0.9}) {
+        const double reach = onset_series_reach(kappa, beta, kRtol);
+        const double target = fraction * reach;
+        const std::optional<OnsetSeriesState> S = onset_series_at_z(kappa, beta, target, reach);
+        ASSERT_TRUE(S) << kappa << " " << beta << " " << fraction;
+        EXPECT_GE(S->z, target);
+        EXPECT_LE(S->z - target, 16 * kUlp * target);
+        auto g = [&](double tau) { return onset_series_state(kappa, beta, tau).z - target; };
+        const double bracketed =
+            solve_crossing(g, target, reach, g(target), g(reach), Direction::rising);
+        EXPECT_NEAR(S->tau, bracketed, 16 * kUlp * bracketed);
+      }
+}
+TEST(OnsetSeriesAtZ, NoAnswerPastTheReach) {
+  const double reach = onset_series_reach(1.0, 0.2, kRtol);
+  EXPECT_FALSE(onset_series_at_z(1.0, 0.2, reach, reach));  // z < tau: its root is past it
+  EXPECT_FALSE(onset_series_at_z(1.0, 0.2, 2 * reach, reach));
 }
 
 }  // namespace
