@@ -637,10 +637,11 @@ class ImpactDriver {
   // and throwing away the part of that step past it. Paper scene, dop853, rtol 1e-8: the
   // series' bound at the yield is ~1e-11, and 123 -> 119 right-hand sides; the 300 x 300 map
   // (rtol 1e-8) 1,154,692 -> 1,070,465 accepted steps. Solved on the series by Newton's method
-  // (onset_series_at_z: four evaluations of the series on the paper impact, where the
-  // bracketing root finder of the events took eight and cost the step's saving back). nullopt
-  // where the onset has no end, the end is past the reach, or the law's first segment does not
-  // end there: the integrator then meets the yield as an event, as before.
+  // (onset_series_at_z: four evaluations of the series on the paper impact; the bracketing
+  // root finder of the events took six, and the impact's instructions went from 21,070 to
+  // 21,911 with it, to 20,930 with Newton). nullopt where the onset has no end, the end is past
+  // the reach, or the law's first segment does not end there: the integrator then meets the
+  // yield as an event, as before.
   std::optional<OnsetSeriesState> series_segment_end(double kappa, double beta, double reach,
                                                      const HertzianOnset& onset) const {
     const std::optional<double> segment_end = law_segment_end(sys_.law, sys_.branch);
