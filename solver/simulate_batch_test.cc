@@ -143,15 +143,15 @@ TEST(SimulateBatch, OnlyThePapersLawWithADashpotByDop853RunsInLanes) {
 
 TEST(SimulateBatch, ALaneThatReachesItsStepLimitFailsAsTheScalarRunDoes) {
   std::vector<SimulationRequest> grid = {paper_point(1.0, 0.1), paper_point(2.0, 0.2)};
-  grid[0].options.max_steps = 5;
-  grid[1].options.max_steps = 5;
+  grid[0].options.max_steps = 2;
+  grid[1].options.max_steps = 2;
   const std::vector<ImpactResult> together = batch(grid);
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const ImpactResult one = simulate(grid[i]);
     EXPECT_EQ(together[i].status, ImpactStatus::failed);
     EXPECT_EQ(together[i].failure, FailureKind::step_limit);
     EXPECT_EQ(together[i].failure, one.failure);
-    EXPECT_NE(together[i].reason.find("max_steps = 5"), std::string::npos) << together[i].reason;
+    EXPECT_NE(together[i].reason.find("max_steps = 2"), std::string::npos) << together[i].reason;
   }
 }
 

@@ -55,8 +55,9 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
       set_up(*slot.job, slot.sys);
       lanes.begin_impact(i);
       slot.driver.emplace(slot.sys, opt, Dop853LaneStepper<System, Lanes>(lanes, i));
-      slot.driver->begin();
-      if (slot.driver->limit_reached() == Driver::Next::step) return true;
+      if (slot.driver->begin() == Driver::Next::step &&
+          slot.driver->limit_reached() == Driver::Next::step)
+        return true;
       finish(*slot.job, slot.driver->take_run(), slot.sys);
     }
     slot.job = nullptr;

@@ -67,6 +67,13 @@ struct ElastoplasticLaw {
   // Hertzian up to yield (region I above; law.h).
   HertzianOnset hertzian_onset() const { return {K_h, z_y}; }
 
+  // Region II, linear in z (law.h: linear_segment): crossed in closed form from the yield.
+  template <class T>
+  std::optional<LinearSegment> linear_segment(const History<T>& b) const {
+    if (b.phase == Phase::loading && b.segment == 1) return LinearSegment{K_y, z_y, yield_force()};
+    return std::nullopt;
+  }
+
   // Hertz force at the yield point, K_h z_y^{3/2} [N].
   double yield_force() const { return K_h * z_y * std::sqrt(z_y); }
 
@@ -154,8 +161,11 @@ struct ElastoplasticLaw {
   void next_segment(History<T>& b) const {
     ++b.segment;
   }
+  // Inlined always: the AVX2 + FMA copy of the dop853 run (dop853_fma.cc) must not emit it out
+  // of line under its shared name (check_clone_symbols.py), which GCC did once the driver called
+  // it from a second place (the closed-form crossing of region II, impact_driver.h).
   template <class T>
-  void begin_unloading(History<T>& b, const T& z_m) const {
+  [[gnu::always_inline]] inline void begin_unloading(History<T>& b, const T& z_m) const {
     using std::sqrt;
     const bool yielded = b.segment == 1;
     b.phase = Phase::unloading;

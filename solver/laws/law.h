@@ -95,6 +95,11 @@ class LawDomainError : public std::runtime_error {
 //                                             branch above z_f (a convex unloading curve: its
 //                                             slope at z_f), or nullopt. Lets the driver decide
 //                                             capture exactly (impact_driver.h)
+//   linear_segment(h)                         optional<LinearSegment>: F = K (z - z_ref) +
+//                                             F_ref exactly on the loading segment of h, so the
+//                                             driver may cross it in closed form
+//                                             (solver/driver/linear_phase.h); rate-independent
+//                                             laws only
 //   hertzian_onset()                          HertzianOnset: F = K z^{3/2} exactly on first
 //                                             loading for 0 <= z <= z_end, so the driver may
 //                                             start the integration from the onset series
@@ -286,6 +291,22 @@ bool law_allows_tension(const L& law) {
     return static_cast<bool>(law.allows_tension);
   else
     return false;
+}
+
+// What a law declares about a loading segment linear in z (linear_segment(h) above).
+struct LinearSegment {
+  double K = 0.0;      // [N/m]: F = K (z - z_ref) + F_ref on the segment
+  double z_ref = 0.0;  // [m]
+  double F_ref = 0.0;  // [N]
+};
+
+// The law's linear_segment(h) when it declares one and is rate-independent, else nullopt.
+template <class L, class H>
+std::optional<LinearSegment> law_linear_segment(const L& law, const H& h) {
+  if constexpr (requires { law.linear_segment(h); } && !L::rate_dependent)
+    return law.linear_segment(h);
+  else
+    return std::nullopt;
 }
 
 // What a law declares about its onset (hertzian_onset() above).
