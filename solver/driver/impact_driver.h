@@ -632,15 +632,13 @@ class ImpactDriver {
   // step of half the span (the solution's own time scale there) scaled to the branch's stiffness
   // (branch_step_scale).
   Next fire_max_compression(T tau, const state_type& x, double span) {
-    const T k_before = sys_.stiffness(x);
     Fired fired;
     fired.branch_changed = true;
     for (EventKind kind : {EventKind::max_compression, EventKind::max_displacement}) {
       if (kind == EventKind::max_displacement && (found_.max_displacement || x[System::W] > 0))
         continue;  // with a dashpot the impactor stops after the spring
-      run_.events.push_back({kind, tau, x, sys_.force(x)});
       try {
-        act(event_row(kind).action, tau, x);
+        fired.step_scale *= record_and_act(kind, tau, x);
       } catch (const LawDomainError& err) {
         stepper_.start(sys_, tau, x);  // where the run stopped, for fail()
         return fail(FailureKind::law_domain, err.what());
@@ -649,7 +647,7 @@ class ImpactDriver {
     if (const auto e_bound = capture_at_unloading(fired, x))
       return finish(ImpactStatus::captured, tau, x, *e_bound);
     stepper_.start(sys_, tau, x);
-    stepper_.propose_step(T(0.5 * span) * branch_step_scale(k_before, sys_.stiffness(x)));
+    stepper_.propose_step(T(0.5 * span) * fired.step_scale);
     return Next::step;
   }
 
@@ -657,10 +655,7 @@ class ImpactDriver {
   // as fire() fires a located one: recorded, and the law put on its next segment. Returns the
   // scale for the step proposed on the Hertzian segment (branch_step_scale).
   T enter_next_segment_at(T tau, const state_type& x) {
-    run_.events.push_back({EventKind::yield, tau, x, sys_.force(x)});
-    const T k_before = sys_.stiffness(x);
-    act(EventAction::next_segment, tau, x);
-    return branch_step_scale(k_before, sys_.stiffness(x));
+    return record_and_act(EventKind::yield, tau, x);
   }
 
   // Trajectory samples on (0, tau0], from the series like the state at tau0.
@@ -824,14 +819,10 @@ class ImpactDriver {
                             (earliest.found[i] && *earliest.found[i] <= te + coincide) ||
                             (earliest.armed[i] && !is_pre_event(event_root(kind, sys_, xe), dir));
       if (!happened) continue;
-      run_.events.push_back({kind, te, xe, sys_.force(xe)});
       const EventAction action = event_row(kind).action;
       fired.branch_changed = fired.branch_changed || changes_branch(action);
       try {
-        const T k_before = changes_branch(action) ? sys_.stiffness(xe) : T(0);
-        act(action, te, xe);
-        if (changes_branch(action))
-          fired.step_scale *= branch_step_scale(k_before, sys_.stiffness(xe));
+        fired.step_scale *= record_and_act(kind, te, xe);
       } catch (const LawDomainError& err) {
         fired.law_domain = err.what();
         return fired;
@@ -839,6 +830,17 @@ class ImpactDriver {
       if (action == EventAction::end_contact) fired.separated = true;
     }
     return fired;
+  }
+
+  // One event at (te, xe): recorded, and what it means done (act). Returns the scale for the
+  // step proposed on the old branch (branch_step_scale; 1 where the branch does not change).
+  // LawDomainError from the law propagates.
+  T record_and_act(EventKind kind, T te, const state_type& xe) {
+    run_.events.push_back({kind, te, xe, sys_.force(xe)});
+    const EventAction action = event_row(kind).action;
+    const T k_before = changes_branch(action) ? sys_.stiffness(xe) : T(0);
+    act(action, te, xe);
+    return changes_branch(action) ? branch_step_scale(k_before, sys_.stiffness(xe)) : T(1);
   }
 
   // What an event means (impact_events.h), done at time te and state xe.

@@ -21,11 +21,15 @@ constexpr double kRtol = 1e-8;
 // dop853's stated error of e in units of v0 (solver/choice/integrator_choice.h: 200 rtol), as
 // separation_step_test.cc.
 constexpr double kStatedError = 200 * kRtol;
-// The yield time from the series: its truncation bound there is at most rtol (relative, on the
-// impulse and the displacement, onset_series.h), and the 50-digit run locates its yield to its
-// own far tighter tolerance; the root on either side is resolved to a few ulps.
+// The yield time: from the series, whose truncation bound there is at most rtol (relative, on
+// the impulse and the displacement, onset_series.h), or located by the integrator on a step
+// whose local error is held to rtol, the yield being the first event (no error carried in);
+// the 50-digit run locates its yield to its own far tighter tolerance, and each root is
+// resolved to a few ulps.
 constexpr double kYieldTimeError = kRtol;  // relative
 
+// (integrator_choice_test.cc builds the same request without the integrator: the solver's tests
+// share no helper header, and six lines are not worth one)
 SimulationRequest request(double v0, double zeta, IntegratorKind integrator) {
   SimulationRequest req;
   req.scene = paper_scene();
