@@ -362,6 +362,8 @@ class ImpactDriver {
       if (fired.separated) return separate(te, xe);
       if (const auto e_bound = capture_at_unloading(fired, xe))
         return finish(ImpactStatus::captured, te, xe, *e_bound);
+      if (fired.branch_changed)  // a located yield onto a linear segment
+        if (const std::optional<Next> crossed = cross_linear_segment(te, xe)) return *crossed;
       if constexpr (Stepper::dense_output) {
         if (opt_.locate_events && !fired.branch_changed && te < t1) {
           scan_t0_ = te;  // scan the rest of this step from the event on
@@ -583,17 +585,20 @@ class ImpactDriver {
 
   // The loading segment the law is on at (tau0, x0), crossed in closed form to maximum
   // compression where the law declares it linear in z (law.h: linear_segment; linear_phase.h):
-  // the elastoplastic law's region II from the yield, which the integrator crossed in 3.7 of the
-  // 9.1 steps of an impact (dop853, rtol 1e-8, a 10 x 10 paper map that yields). Maximum
-  // compression is then fired there as fire() fires a located one, the capture criteria asked,
-  // and the stepper started on the unloading branch. Without a dashpot the impactor stops at
-  // the same instant, w = 0 exactly (z' = w), and maximum displacement fires with it. nullopt
-  // where the closed form does not apply (no linear segment, T not double, no zero of its
-  // compression rate in floating point): the integrator crosses the segment.
+  // the elastoplastic law's region II from the yield, reached by the onset series or located by
+  // the integrator, which crossed it in 3.7 of the 9.1 steps of an impact (dop853, rtol 1e-8, a
+  // 10 x 10 paper map that yields). Maximum compression is then fired there as fire() fires a
+  // located one, the capture criteria asked, and the stepper started on the unloading branch.
+  // Without a dashpot the impactor stops at the same instant, w = 0 exactly (z' = w), and
+  // maximum displacement fires with it. nullopt where the closed form does not apply (no linear
+  // segment, T not double, a stepper that does not start from the series, options that turn the
+  // series off, no zero of its compression rate in floating point): the integrator crosses the
+  // segment.
   std::optional<Next> cross_linear_segment(T tau0, const state_type& x0) {
-    if constexpr (!std::is_same_v<T, double>) {
+    if constexpr (!std::is_same_v<T, double> || !requires { Stepper::starts_from_onset_series; }) {
       return std::nullopt;
     } else {
+      if (opt_.fixed_step || !opt_.onset_series || !opt_.locate_events) return std::nullopt;
       const std::optional<LinearSegment> seg = law_linear_segment(sys_.law, sys_.branch);
       if (!seg) return std::nullopt;
       const double k = seg->K * sys_.length * sys_.inverse_force_scale;

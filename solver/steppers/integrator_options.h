@@ -29,8 +29,9 @@ struct IntegratorOptions {
   // steps that leave the z^{3/2} onset are not taken; and end an elastic contact (a Hertzian
   // unloading branch with no permanent set) by the same series run backwards from the
   // separation (solver/driver/end_series.h): the steps into the (tau_f - tau)^{5/2} end are not
-  // taken either. false: integrate from tau = 0 to the located separation (the speed study's
-  // "before").
+  // taken either; and cross a loading segment linear in z in closed form
+  // (solver/driver/linear_phase.h: the elastoplastic law's region II). false: integrate from
+  // tau = 0 to the located separation (the speed study's "before").
   bool onset_series = true;
   // Post-run check that the three CORs and the energy ledger agree within what rtol/atol
   // allow (solver/consistency.h); a run that does not is a failure with the reason. Off only
