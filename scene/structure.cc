@@ -253,7 +253,11 @@ std::string structure_formula(const Structure& s) {
   return "";
 }
 
+// m^{3/5} K_h^{2/5} as (m^3 K_h^2)^{1/5}: one power instead of two (each simulate() derives
+// it), where m^3 K_h^2 is a normal number; as the two powers where it would over- or underflow
 double zener_mass_stiffness_factor(double m, double K_h) {
+  const double q = m * m * m * K_h * K_h;
+  if (std::isnormal(q)) return std::pow(q, 0.2);
   return std::pow(m, 0.6) * std::pow(K_h, 0.4);
 }
 

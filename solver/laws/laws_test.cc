@@ -139,6 +139,40 @@ TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
   }
 }
 
+// The unloading force is computed plainly, K_h z^{3/2} + hertz_offset, where the cancellation's
+// gain g = K_h z_m^{3/2} / F_m is at most kPlainUnloadingGain, and factored above it
+// (elastoplastic.h). Reference: the same textbook formula in 50 digits. Tolerance: the plain
+// form rounds K_h z^{3/2} (three operations) and adds the offset, a few ulps of K_h z_m^{3/2}:
+// 4 ulps, i.e. 4 g ulps of F_m, against the factored form's 1e-13 relative (the test above).
+TEST(Elastoplastic, UnloadingIsPlainOnlyWhereTheCancellationGainIsSmall) {
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  constexpr double kUlp = 0x1p-52;
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  // z_m / z_y: just above yield, ~6 (the paper impact), 56 (g = 5, v0 = 10 m/s), 560 (g = 15.8,
+  // 100 m/s), and past the bound (g ~ (2/3) sqrt(z_m / z_y): 21 at 1e3)
+  for (double ratio : {1.01, 6.0, 56.0, 560.0, 1e3, 1e8}) {
+    const double z_m = ratio * p.z_y;
+    ElastoplasticLaw::History<double> b;
+    law_next_segment(law, b);
+    law_begin_unloading(law, b, z_m);
+    const mp Kh = p.K_h, zy = p.z_y, zm = z_m;
+    const mp F_m = p.K_y * (zm - zy) + Kh * zy * sqrt(zy);
+    const double gain = static_cast<double>(Kh * zm * sqrt(zm) / F_m);
+    EXPECT_EQ(b.plain_unloading, gain <= ElastoplasticLaw::kPlainUnloadingGain) << ratio;
+    if (!b.plain_unloading) continue;  // the factored form: the test above
+    const mp zf15 = zm * sqrt(zm) - F_m / Kh;
+    const mp zf = cbrt(zf15 * zf15);
+    const double bound = 4 * gain * kUlp * static_cast<double>(F_m);
+    for (double frac : {1.0, 0.5, 1e-3, 0.0}) {  // z = z_f + frac (z_m - z_f)
+      const double z = static_cast<double>(zf + frac * (zm - zf));
+      const mp zz = z;
+      const double force = static_cast<double>(Kh * (zz * sqrt(zz) - zf15));
+      EXPECT_NEAR(law.force(b, z, 0.0), force, bound) << ratio << " " << frac;
+    }
+  }
+}
+
 TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};

@@ -110,6 +110,12 @@ struct LaneMath {
   [[gnu::always_inline]] static vector select(mask m, vector yes, vector no) {
     return m ? yes : no;
   }
+  // whether m is true in any lane
+  [[gnu::always_inline]] static bool any(mask m) {
+    bool r = false;
+    for (std::size_t i = 0; i < L; ++i) r = r || m[i] != 0;
+    return r;
+  }
   // std::max(a, b) lane by lane: (a < b) ? b : a, NaN included
   [[gnu::always_inline]] static vector max(vector a, vector b) {
     return select(a < b, b, a);

@@ -97,6 +97,21 @@ TEST(Dop853Lanes, LanesOnDifferentBranchesEachMatchTheScalarStep) {
   compare_lanes_with_scalar(starts, {.steps = 4, .dense_samples = true});
 }
 
+// Unloading far above yield (z_m = 2000 z_y: the cancellation's gain 30, past
+// ElastoplasticLaw::kPlainUnloadingGain) takes the factored force; beside it a plain unloading
+// lane and the loading branches, which then see the factored form computed and not taken.
+TEST(Dop853Lanes, AFactoredUnloadingLaneBesidePlainOnesMatchesTheScalarStep) {
+  const std::array<LaneStart, kDop853Lanes> starts = {
+      paper_lane(10.0, 0.2, {Branch::plastic_unloading, 1990.0, 2000.0, -0.1, 0.01}),
+      paper_lane(1.0, 0.1, {Branch::plastic_unloading, 1.9, 2.5, -0.2, 0.05}),
+      paper_lane(1.0, 0.1, {Branch::hertz_loading, 0.6, 2.0, 0.9, 0.05}),
+      paper_lane(1.0, 0.1, {Branch::plastic_loading, 1.7, 2.0, 0.5, 0.05}),
+  };
+  ASSERT_FALSE(starts[0].system.branch.plain_unloading);
+  ASSERT_TRUE(starts[1].system.branch.plain_unloading);
+  compare_lanes_with_scalar(starts, {.steps = 3, .dense_samples = true});
+}
+
 // The tension side of an unloading branch (z <= 0, past separation) beside a Hertz lane.
 TEST(Dop853Lanes, TheTensionSideOfUnloadingMatchesTheScalarStep) {
   const std::array<LaneStart, kDop853Lanes> starts = {
@@ -175,20 +190,23 @@ TEST(Dop853Lanes, AFailedLaneFailsAsTheScalarStepAndLeavesTheOthersAlone) {
 
 // The law's force in lanes (elastoplastic.h: force_lanes) against force() lane by lane, here in
 // the baseline code of this test (SSE2: two lanes a vector; no fused multiply-add on either
-// side), on every branch.
+// side), on every branch: the plain unloading (z_m = 2.5 z_y), the factored one (z_m = 2000 z_y,
+// beside a plain lane), the elastic one; the pairs without a factored lane skip its formula.
 TEST(ElastoplasticForceLanes, EachLaneIsTheScalarForceOnItsBranch) {
   using Lanes = LaneMath<2>;
-  const std::array<LaneStart, 4> lanes = {
+  const std::array<LaneStart, 6> lanes = {
       paper_lane(1.0, 0.1, {Branch::hertz_loading, 0.6, 2.0, 0.9, 0.05}),
       paper_lane(3.0, 0.3, {Branch::plastic_loading, 1.7, 2.0, 0.5, 0.05}),
       paper_lane(0.5, 0.5, {Branch::plastic_unloading, 1.9, 2.5, -0.2, 0.05}),
       paper_lane(1.0, 0.1, {Branch::elastic_unloading, 0.4, 0.8, -0.7, 0.05}),
+      paper_lane(10.0, 0.2, {Branch::plastic_unloading, 1990.0, 2000.0, -0.1, 0.01}),
+      paper_lane(1.0, 0.1, {Branch::plastic_unloading, 1.9, 2.5, -0.2, 0.05}),
   };
-  for (std::size_t pair = 0; pair < 4; pair += 2) {  // lanes 0 and 1, then 2 and 3
+  for (std::size_t pair = 0; pair < lanes.size(); pair += 2) {  // lanes 0 and 1, 2 and 3, ...
     ElastoplasticLaw::LaneBranches<Lanes> c;
     for (std::size_t i = 0; i < 2; ++i)
       c.set_lane(i, lanes[pair + i].system.law, lanes[pair + i].system.branch);
-    for (const double scale : {-0.5, -1e-3, 0.0, 0.3, 1.0, 1.6, 3.0}) {
+    for (const double scale : {-0.5, -1e-3, 0.0, 0.3, 1.0, 1.6, 3.0, 1980.0, 1999.0}) {
       Lanes::vector z{};
       for (std::size_t i = 0; i < 2; ++i) z[i] = scale * lanes[pair + i].system.law.z_y;
       const Lanes::vector F = ElastoplasticLaw::force_lanes<Lanes>(c, z);
