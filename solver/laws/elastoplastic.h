@@ -238,8 +238,11 @@ struct ElastoplasticLaw {
     return 0.2 * K_h * A_minus_B * A_minus_B *
            (((2.0 * A + 4.0 * B) * A + 6.0 * B * B) * A + 3.0 * B * B * B);
   }
+  // Inlined always, as begin_unloading: GCC emitted it out of line in the AVX2 + FMA copy of the
+  // dop853 run once the stage arithmetic changed around it (dop853_stage_argument), under the
+  // name the baseline code shares (check_clone_symbols.py).
   template <class T>
-  std::optional<double> hysteresis_work(const History<T>& b) const {
+  [[gnu::always_inline]] inline std::optional<double> hysteresis_work(const History<T>& b) const {
     using std::sqrt;
     const double z_m = static_cast<double>(b.z_max);
     double loading;

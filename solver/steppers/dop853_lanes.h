@@ -50,6 +50,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "solver/steppers/dop853.h"
 #include "solver/steppers/integrator_options.h"
@@ -158,11 +159,12 @@ struct ImpactSystemLanes {
   [[gnu::always_inline]] void operator()(const state_type& x, state_type& dxdt) const {
     constexpr std::size_t A = System::A, W = System::W, J = System::J, WA = System::WA;
     const V z = System::has_dashpot ? x[System::Z] : x[A];
-    const V F = Law::template force_lanes<Lanes>(law, length * z) * inverse_force_scale;
+    const V force_N = Law::template force_lanes<Lanes>(law, length * z);
+    const V F = force_N * inverse_force_scale;
     dxdt[A] = x[W];
     dxdt[W] = -F;
     if constexpr (System::has_dashpot) {
-      dxdt[System::Z] = x[W] - two_zeta * F;
+      dxdt[System::Z] = x[W] - (two_zeta * inverse_force_scale) * force_N;  // as z_rate_of
       dxdt[System::WV] = two_zeta * F * F;
     }
     dxdt[J] = F;
@@ -424,12 +426,13 @@ class Dop853Lanes {
   [[gnu::always_inline]] V weighted(const double* w, std::size_t m) const {
     return (... + (w[J] * k_[J][m]));
   }
-  // Stage I of every lane (dop853.h's stage: only the components the right-hand side reads).
+  // Stage I of every lane (dop853.h's stage: only the components the right-hand side reads, each
+  // by dop853_stage_argument, the newest stage added last and alone).
   template <std::size_t I, std::size_t... J>
   [[gnu::always_inline]] void stage(const V& h) const {
     lane_state tmp{};
     for (const std::size_t m : Rhs::rhs_components)
-      tmp[m] = x0_[m] + h * weighted<J...>(dop853_tableau::a[I], m);
+      tmp[m] = dop853_stage_argument<I, J...>(x0_[m], h, k_, m);
     rhs_(tmp, k_[I]);
   }
 
