@@ -97,25 +97,43 @@ TEST(Elastoplastic, HysteresisEqualsLoadingWorkMinusUnloadingWork) {
   EXPECT_GT(area, 0.0);
 }
 
+using mp = boost::multiprecision::cpp_bin_float_50;
+
+// The elastoplastic law unloading from z_m after yield, and the textbook (cancelling) formulas'
+// F_m, z_f^{3/2} and z_f in 50 digits, which absorb the cancellation.
+struct UnloadingReference {
+  ElastoplasticLaw::History<double> branch;
+  mp Kh, zm, F_m, zf15, zf;
+};
+UnloadingReference unloading_from(const ElastoplasticLaw& law, const DerivedParameters& p,
+                                  double z_m) {
+  UnloadingReference u;
+  law_next_segment(law, u.branch);
+  law_begin_unloading(law, u.branch, z_m);
+  u.Kh = p.K_h;
+  u.zm = z_m;
+  const mp zy = p.z_y;
+  u.F_m = p.K_y * (u.zm - zy) + u.Kh * zy * sqrt(zy);
+  u.zf15 = u.zm * sqrt(u.zm) - u.F_m / u.Kh;
+  u.zf = cbrt(u.zf15 * u.zf15);
+  return u;
+}
+
 // Far above yield the unloading force and the stored energy are small differences of large
 // numbers (K_h z^{3/2} - K_h z_f^{3/2}); written that way they lost sqrt(z_m/z_y) of their
 // relative accuracy (~1e23 J wrong at v0 = 1e16 m/s). Reference: the textbook
 // (cancelling) formulas evaluated in 50 digits, which absorb the loss. Tolerance: the factored
-// forms have only same-sign terms, so a few ulps per operation: 1e-13 relative.
+// forms have only same-sign terms, so a few ulps per operation: 1e-13 relative (at 3 z_y the
+// force is the plain form, whose gain 1.2 keeps it inside the same bound: the next test).
 TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
-  using mp = boost::multiprecision::cpp_bin_float_50;
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   for (double ratio : {3.0, 1e4, 1e8, 1e12, 1e16}) {
     const double z_m = ratio * p.z_y;
-    ElastoplasticLaw::History<double> b;
-    law_next_segment(law, b);
-    law_begin_unloading(law, b, z_m);
-    const mp Kh = p.K_h, zy = p.z_y, zm = z_m;
-    const mp F_m = p.K_y * (zm - zy) + Kh * zy * sqrt(zy);
-    const mp zf15 = zm * sqrt(zm) - F_m / Kh;
-    const mp zf = cbrt(zf15 * zf15);
-    const mp span = zm - zf;
+    const UnloadingReference u = unloading_from(law, p, z_m);
+    const ElastoplasticLaw::History<double>& b = u.branch;
+    const mp &Kh = u.Kh, &zf15 = u.zf15, &zf = u.zf;
+    const mp span = u.zm - zf;
     EXPECT_NEAR(b.z_perm, static_cast<double>(zf), 1e-13 * z_m) << ratio;
     EXPECT_NEAR(b.unloading_span, static_cast<double>(span), 1e-13 * static_cast<double>(span))
         << ratio;
@@ -145,24 +163,18 @@ TEST(Elastoplastic, UnloadingHasNoCancellationFarAboveYield) {
 // form rounds K_h z^{3/2} (three operations) and adds the offset, a few ulps of K_h z_m^{3/2}:
 // 4 ulps, i.e. 4 g ulps of F_m, against the factored form's 1e-13 relative (the test above).
 TEST(Elastoplastic, UnloadingIsPlainOnlyWhereTheCancellationGainIsSmall) {
-  using mp = boost::multiprecision::cpp_bin_float_50;
   constexpr double kUlp = 0x1p-52;
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
   // z_m / z_y: just above yield, ~6 (the paper impact), 56 (g = 5, v0 = 10 m/s), 560 (g = 15.8,
   // 100 m/s), and past the bound (g ~ (2/3) sqrt(z_m / z_y): 21 at 1e3)
   for (double ratio : {1.01, 6.0, 56.0, 560.0, 1e3, 1e8}) {
-    const double z_m = ratio * p.z_y;
-    ElastoplasticLaw::History<double> b;
-    law_next_segment(law, b);
-    law_begin_unloading(law, b, z_m);
-    const mp Kh = p.K_h, zy = p.z_y, zm = z_m;
-    const mp F_m = p.K_y * (zm - zy) + Kh * zy * sqrt(zy);
+    const UnloadingReference u = unloading_from(law, p, ratio * p.z_y);
+    const ElastoplasticLaw::History<double>& b = u.branch;
+    const mp &Kh = u.Kh, &zm = u.zm, &F_m = u.F_m, &zf15 = u.zf15, &zf = u.zf;
     const double gain = static_cast<double>(Kh * zm * sqrt(zm) / F_m);
     EXPECT_EQ(b.plain_unloading, gain <= ElastoplasticLaw::kPlainUnloadingGain) << ratio;
     if (!b.plain_unloading) continue;  // the factored form: the test above
-    const mp zf15 = zm * sqrt(zm) - F_m / Kh;
-    const mp zf = cbrt(zf15 * zf15);
     const double bound = 4 * gain * kUlp * static_cast<double>(F_m);
     for (double frac : {1.0, 0.5, 1e-3, 0.0}) {  // z = z_f + frac (z_m - z_f)
       const double z = static_cast<double>(zf + frac * (zm - zf));
