@@ -185,6 +185,27 @@ TEST(Elastoplastic, UnloadingIsPlainOnlyWhereTheCancellationGainIsSmall) {
   }
 }
 
+// The segment the law declares linear (law.h: linear_segment, which the driver crosses in closed
+// form with its K) is its force: region II only, F = K (z - z_ref) + F_ref there to the rounding
+// of the two formulas (kAlgebra), K equal to the law's stiffness; none on region I or unloading.
+TEST(Elastoplastic, TheDeclaredLinearSegmentIsRegionTwo) {
+  const DerivedParameters p = paper();
+  const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
+  ElastoplasticLaw::History<double> b;
+  EXPECT_FALSE(law_linear_segment(law, b).has_value());  // region I: Hertz
+  law_next_segment(law, b);
+  const std::optional<LinearSegment> seg = law_linear_segment(law, b);
+  ASSERT_TRUE(seg.has_value());
+  for (double ratio : {1.0, 1.5, 4.0, 30.0}) {
+    const double z = ratio * p.z_y;
+    const double F = law.force(b, z, 0.0);
+    EXPECT_NEAR(seg->K * (z - seg->z_ref) + seg->F_ref, F, kAlgebra * F) << ratio;
+    EXPECT_EQ(seg->K, law.stiffness(b, z, 0.0)) << ratio;
+  }
+  law_begin_unloading(law, b, 4 * p.z_y);
+  EXPECT_FALSE(law_linear_segment(law, b).has_value());  // unloading: Hertz-shaped
+}
+
 TEST(Elastoplastic, UnloadingBeforeYieldIsHertz) {
   const DerivedParameters p = paper();
   const ElastoplasticLaw law{p.K_h, p.z_y, p.K_y};
