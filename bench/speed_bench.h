@@ -27,8 +27,9 @@
 // paper scene at |de|/e <= 1e-8 (time, and ivv's time over odeint's and over the faster CVODE's at
 // that level); the 300 x 300 map (v0 0.1-10 m/s log x zeta 0-1, rtol = atol = 1e-8, --model auto,
 // --integrator auto) through SweepSink with its journal and CSV, wall clock on one and two threads
-// (--quick: 60 x 30, scaled); --integrator auto against the fastest fixed integrator on every point
-// of a grid with the heavily damped scenes (auto_grid in the JSON); the linearized closed form.
+// (--quick: 150 x 150, scaled); --integrator auto against the fastest fixed integrator on every
+// point of a grid with the heavily damped scenes (auto_grid in the JSON); the linearized closed
+// form.
 //
 // Beside each per-impact target and the large map: the arithmetic limit (the RHS evaluations the
 // run needed x the measured cost of one) and the instructions per impact counted by callgrind in

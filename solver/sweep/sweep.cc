@@ -166,7 +166,7 @@ void run_sweep_batch(const SweepRequest& req, const SweepPointRequests& shared,
 }
 
 // Points a batch of run_sweep, as run_sweep_points' workers take them (SweepRunOptions::batch).
-constexpr std::size_t kSweepBatch = 32;
+constexpr std::size_t kSweepBatch = kSweepBatchPoints;
 }  // namespace
 
 std::string run_sweep_point(const SweepRequest& req, std::size_t index) {

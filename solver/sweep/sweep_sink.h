@@ -263,14 +263,22 @@ struct SweepWorkerTime {
   std::size_t points = 0;  // the points it computed
 };
 
+// The points a sweep's worker computes together (SweepRunOptions::batch, run_sweep).
+inline constexpr std::size_t kSweepBatchPoints = 128;
+
 struct SweepRunOptions {
   const std::atomic<bool>* stop = nullptr;  // set by a signal handler: stop handing out work
   // Called once for every point delivered (a batch at a time), serialised.
   std::function<void(std::size_t done, std::size_t total)> progress;
-  // Points a worker takes at a time and delivers together (one lock and one journal flush):
-  // 32 points are about 0.4 ms of the paper scene's work; a SIGKILL loses at most a batch a
-  // worker, computed again on --resume.
-  std::size_t batch = 32;
+  // Points a worker takes at a time and delivers together (one lock and one journal flush); a
+  // SIGKILL loses at most a batch a worker, computed again on --resume. 128 points are about
+  // 0.4 ms of the paper scene's work. On the 300 x 300 map (rtol 1e-8, --model auto), against
+  // 32 points: one thread 0.266 -> 0.260 s (16 alternating runs, medians; 256 points: 0.261 s),
+  // as the lanes run short at the end of every batch; two threads 0.147 -> 0.138 s (10 rounds,
+  // within this machine's noise), with a third of the context switches (perf stat: 100 a map ->
+  // 35), each a lock one worker waited for. Near the end of the grid take() hands out less
+  // (SweepSink::take), so the workers still end together.
+  std::size_t batch = kSweepBatchPoints;
   // Not null: one entry a worker, filled as each ends.
   std::vector<SweepWorkerTime>* workers = nullptr;
 };
