@@ -53,6 +53,7 @@ void simulate_batch(std::span<const ValidatedRequest> requests, std::span<Impact
     throw std::invalid_argument("simulate_batch: as many results as requests");
   std::vector<Plan> plans(requests.size());
   std::vector<std::size_t> waiting;  // the lanes' impacts not run yet
+  waiting.reserve(requests.size());  // one allocation, not one for every doubling
   for (std::size_t i = 0; i < requests.size(); ++i) {
     plans[i] = plan(requests[i]);
     if (plans[i].lanes)
@@ -62,6 +63,7 @@ void simulate_batch(std::span<const ValidatedRequest> requests, std::span<Impact
   }
   // the lanes share their options: those of the first waiting impact, then of the next left
   std::vector<detail::LaneImpact> lanes;
+  lanes.reserve(waiting.size());
   while (!waiting.empty()) {
     const IntegratorOptions& options = requests[waiting.front()].request().options;
     std::vector<std::size_t> later;

@@ -9,6 +9,8 @@
 #include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "solver/driver/capture_end_state.h"
 #include "solver/driver/impact_driver.h"
@@ -21,9 +23,11 @@
 
 namespace ivv::detail {
 
+// `event_storage`: an event list whose memory the result's events reuse (its contents are
+// dropped), so that a caller that keeps its results (a sweep's batch) allocates none per impact.
 template <class System>
 ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, const Scene& scene,
-                         const Scales& k) {
+                         const Scales& k, std::vector<ImpactEvent>&& event_storage = {}) {
   // the 50-digit reference reports in double, like everything else
   auto d = [](const auto& v) { return static_cast<double>(v); };
   const double L = sys.length, V = scene.velocity, Fs = sys.force_scale;
@@ -31,6 +35,8 @@ ImpactResult to_physical(const NormalisedRun<System>& run, const System& sys, co
   const double E = k.energy;             // m* v0^2
   const double momentum = k.energy / V;  // m* v0
   ImpactResult r;
+  r.events = std::move(event_storage);
+  r.events.clear();
   r.status = run.status;
   r.failure = run.failure;
   r.reason = run.reason;

@@ -85,7 +85,9 @@ struct Job {
     set_up_system(sys, LocalLaw(ElastoplasticLaw::make(v.request().parameters, p)), p, job.k);
   };
   auto finish = [](Job& job, NormalisedRun<System>&& run, const System& sys) {
-    *job.impact->result = to_physical(run, sys, job.impact->request->request().scene, job.k);
+    ImpactResult& result = *job.impact->result;  // a sweep's batch keeps it: its events' memory
+    result = to_physical(run, sys, job.impact->request->request().scene, job.k,
+                         std::move(result.events));
   };
   run_impacts_in_lanes<System, Avx2Lanes>(std::span<Job>(jobs), options, set_up, finish);
 }

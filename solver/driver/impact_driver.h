@@ -230,6 +230,13 @@ class ImpactDriver {
   ImpactDriver(System& sys, const IntegratorOptions& opt, Stepper stepper)
       : sys_(sys), opt_(opt), observer_(nullptr), samples_per_step_(0), stepper_(stepper) {}
 
+  // Before begin(): the event list of a run finished before, whose memory this run's event list
+  // reuses (its contents are dropped), so that a lane's impacts after the first allocate none.
+  void reuse_event_storage(std::vector<typename NormalisedRun<System>::Event>&& storage) {
+    run_.events = std::move(storage);
+    run_.events.clear();
+  }
+
   // What the run needs after a call of limit_reached() or after_step() below: the next step, or
   // nothing (the run is done: take_run()).
   enum class Next { step, done };
@@ -253,8 +260,9 @@ class ImpactDriver {
     const T tau = 0;
     sys_.branch = typename System::history_type{};
     sys_.tension = law_allows_tension(sys_.law);
-    // one allocation per impact: onset, yield, max_compression, max_displacement, peak_force
-    // and separation or capture, with room for a law with more segments
+    // one allocation per impact (none where the list came with storage): onset, yield,
+    // max_compression, max_displacement, peak_force and separation or capture, with room for a
+    // law with more segments
     run_.events.reserve(8);
     run_.events.push_back({EventKind::onset, tau, x, sys_.force(x)});
     if (observer_) (*observer_)(0.0, x, sys_);

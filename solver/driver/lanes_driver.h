@@ -20,6 +20,7 @@
 #include <optional>
 #include <span>
 #include <utility>
+#include <vector>
 
 #include "solver/driver/impact_driver.h"
 #include "solver/steppers/dop853_lane_stepper.h"
@@ -42,10 +43,19 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
     System sys{};  // the driver and the lane hold its address
     std::optional<Driver> driver;
     Job* job = nullptr;
+    // the event list of the lane's last finished run: the next run's list reuses its memory
+    std::vector<typename NormalisedRun<System>::Event> event_storage;
   };
   Stepper lanes(opt);
   std::array<Slot, L> slots;
   std::size_t next = 0, busy = 0;
+  // the slot's finished run to finish(); its event list's memory kept for the lane's next run
+  // (finish may have moved it away: then the next run allocates its own)
+  auto finish_run = [&](Slot& slot) {
+    NormalisedRun<System> run = slot.driver->take_run();
+    finish(*slot.job, std::move(run), slot.sys);
+    slot.event_storage = std::move(run.events);
+  };
   // the next job into lane i, until one needs a step; false when none is left (the lane stops)
   auto load = [&](std::size_t i) {
     Slot& slot = slots[i];
@@ -55,10 +65,11 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
       set_up(*slot.job, slot.sys);
       lanes.begin_impact(i);
       slot.driver.emplace(slot.sys, opt, Dop853LaneStepper<System, Lanes>(lanes, i));
+      slot.driver->reuse_event_storage(std::move(slot.event_storage));
       if (slot.driver->begin() == Driver::Next::step &&
           slot.driver->limit_reached() == Driver::Next::step)
         return true;
-      finish(*slot.job, slot.driver->take_run(), slot.sys);
+      finish_run(slot);
     }
     slot.job = nullptr;
     slot.driver.reset();
@@ -76,7 +87,7 @@ void run_impacts_in_lanes(std::span<Job> jobs, const IntegratorOptions& opt, Set
       if (slot.driver->after_step(lanes.step_result(i)) == Driver::Next::step &&
           slot.driver->limit_reached() == Driver::Next::step)
         continue;
-      finish(*slot.job, slot.driver->take_run(), slot.sys);
+      finish_run(slot);
       if (!load(i)) --busy;
     }
   }

@@ -69,5 +69,48 @@ TEST(SweepAllocations, RowsAllocateNothingOnceTheBatchBuffersHaveGrown) {
   EXPECT_LE(allocations_of_rows(7, 2), kMaxLateGrowths);
 }
 
+// Allocations of run_sweep_points on a grid of the 300 x 300 map's range and settings (--model
+// auto, --integrator auto, rtol = atol = 1e-8), one thread, batches of kSweepBatchPoints.
+long allocations_of_sweep(int velocities, int zetas) {
+  SweepRequest req;
+  req.base.scene = paper_scene();
+  req.base.law = LawKind::elastoplastic;
+  req.base.model = ModelKind::automatic;
+  req.base.auto_integrator = true;
+  req.base.options.rtol = req.base.options.atol = 1e-8;
+  req.velocities = log_grid(0.1, 10.0, velocities);
+  req.zetas = linear_grid(0.0, 1.0, zetas);
+  req.threads = 1;
+  const fs::path csv = fs::temp_directory_path() /
+                       ("ivv_sweep_point_allocation_" + std::to_string(getpid()) + ".csv");
+  long allocations = 0;
+  {
+    SweepSink sink(req, {csv, false, "test"});
+    const long before = heap_allocations_so_far();
+    run_sweep_points(req, sink, {});
+    allocations = heap_allocations_so_far() - before;
+    EXPECT_TRUE(sink.finish({}));
+  }
+  fs::remove(csv);
+  return allocations;
+}
+
+// What a batch allocates, whatever its points: the index vector take() hands out; in
+// simulate_batch the plans, the waiting points, the lanes' list and the points left for later;
+// run_lanes' jobs; and each of the four lanes' first event list (a lane's later impacts reuse
+// its memory, and the batch's results reuse theirs): ten, and two more for a row or journal
+// buffer that grows once more (kMaxLateGrowths above, per text). An impact allocated two event
+// lists before (2.6 allocations a point on the map).
+constexpr long kMaxPerBatch = 12;
+
+TEST(SweepAllocations, PointsAllocateNothingOnlyTheirBatchesDo) {
+  // 64 x 32 and 64 x 96 points: 16 and 48 batches; the difference leaves out the warm-up
+  const long small = allocations_of_sweep(64, 32), large = allocations_of_sweep(64, 96);
+  const long batches = (64 * 96 - 64 * 32) / static_cast<long>(kSweepBatchPoints);
+  EXPECT_LE(large - small, kMaxPerBatch * batches)
+      << "a sweep of " << 64 * 96 - 64 * 32 << " more points allocated " << large - small
+      << " times more";
+}
+
 }  // namespace
 }  // namespace ivv

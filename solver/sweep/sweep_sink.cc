@@ -356,6 +356,7 @@ std::vector<std::size_t> SweepSink::take(std::size_t max, WhenAhead when_ahead,
 std::vector<std::size_t> SweepSink::take_locked(std::unique_lock<std::mutex>& lock, std::size_t max,
                                                 WhenAhead when_ahead, std::size_t workers) {
   std::vector<std::size_t> out;
+  out.reserve(max);  // one allocation a batch, not one for every doubling
   while (out.empty()) {
     if (stop_ || cursor_ >= total_) return out;
     if (workers > 1) max = std::clamp<std::size_t>((total_ - cursor_) / (2 * workers), 1, max);
