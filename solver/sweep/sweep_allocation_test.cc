@@ -21,9 +21,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A sink writing a journal and a partial CSV for `req`, handed to deliver(sink), which returns
+// the allocations it counted; the sink is then finished and its files removed.
+template <class Deliver>
+long allocations_into_sink(const SweepRequest& req, Deliver&& deliver) {
+  const fs::path csv =
+      fs::temp_directory_path() / ("ivv_sweep_allocation_" + std::to_string(getpid()) + ".csv");
+  long allocations = 0;
+  {
+    SweepSink sink(req, {csv, false, "test"});
+    allocations = deliver(sink);
+    EXPECT_TRUE(sink.finish({}));
+  }
+  fs::remove(csv);
+  return allocations;
+}
+
 // Rows of a 40 x 50 grid formatted from one separated and one captured result into a batch of
-// `batch` rows at a time and delivered to a sink writing a journal and a partial CSV; returns
-// the allocations after the first `warm` batches (when the buffers have grown).
+// `batch` rows at a time and delivered to a sink; returns the allocations after the first
+// `warm` batches (when the buffers have grown).
 long allocations_of_rows(std::size_t batch, std::size_t warm) {
   SweepRequest req;
   req.base.scene = paper_scene();
@@ -33,11 +49,7 @@ long allocations_of_rows(std::size_t batch, std::size_t warm) {
   EXPECT_TRUE(separated.separated()) << separated.reason;
   ImpactResult captured = separated;
   captured.status = ImpactStatus::captured;
-  const fs::path csv =
-      fs::temp_directory_path() / ("ivv_sweep_allocation_" + std::to_string(getpid()) + ".csv");
-  long allocations = 0;
-  {
-    SweepSink sink(req, {csv, false, "test"});
+  return allocations_into_sink(req, [&](SweepSink& sink) {
     const SweepInputColumns inputs(req);
     SweepRowBatch rows;
     long before = heap_allocations_so_far();
@@ -51,11 +63,8 @@ long allocations_of_rows(std::size_t batch, std::size_t warm) {
       }
       sink.deliver(rows);
     }
-    allocations = heap_allocations_so_far() - before;
-    EXPECT_TRUE(sink.finish({}));
-  }
-  fs::remove(csv);
-  return allocations;
+    return heap_allocations_so_far() - before;
+  });
 }
 
 // One worker's batch and the sink's spare trade their buffers, two texts each (the rows and
@@ -81,18 +90,11 @@ long allocations_of_sweep(int velocities, int zetas) {
   req.velocities = log_grid(0.1, 10.0, velocities);
   req.zetas = linear_grid(0.0, 1.0, zetas);
   req.threads = 1;
-  const fs::path csv = fs::temp_directory_path() /
-                       ("ivv_sweep_point_allocation_" + std::to_string(getpid()) + ".csv");
-  long allocations = 0;
-  {
-    SweepSink sink(req, {csv, false, "test"});
+  return allocations_into_sink(req, [&](SweepSink& sink) {
     const long before = heap_allocations_so_far();
     run_sweep_points(req, sink, {});
-    allocations = heap_allocations_so_far() - before;
-    EXPECT_TRUE(sink.finish({}));
-  }
-  fs::remove(csv);
-  return allocations;
+    return heap_allocations_so_far() - before;
+  });
 }
 
 // What a batch allocates, whatever its points: the index vector take() hands out; in
