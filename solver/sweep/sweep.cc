@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <exception>
 #include <mutex>
@@ -9,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "solver/format.h"
 #include "solver/parallel.h"
@@ -184,17 +186,24 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
   ParallelOptions opt;
   opt.threads = req.threads;
   opt.stop = req.stop;
-  // batches of kSweepBatch consecutive points, each computed together (compute_batch)
-  const std::size_t batches = (points.size() + kSweepBatch - 1) / kSweepBatch;
+  // batches of up to kSweepBatch consecutive points, each computed together (compute_batch),
+  // smaller near the end of the grid (guided_batch_size): batch b is [starts[b], starts[b + 1])
+  const std::size_t workers = static_cast<std::size_t>(worker_count(points.size(), req.threads));
+  std::vector<std::size_t> starts;
+  for (std::size_t first = 0; first < points.size();
+       first += guided_batch_size(points.size() - first, workers, kSweepBatch))
+    starts.push_back(first);
+  starts.push_back(points.size());
+  std::atomic<std::size_t> points_done{0};
   if (req.progress)
-    opt.progress = [&](std::size_t done, std::size_t) {
-      req.progress(std::min(done * kSweepBatch, points.size()), points.size());
+    opt.progress = [&](std::size_t, std::size_t) {
+      req.progress(points_done.load(), points.size());
     };
   try {
-    parallel_for(batches, opt, [&](std::size_t b) {
+    parallel_for(starts.size() - 1, opt, [&](std::size_t b) {
       std::array<std::size_t, kSweepBatch> indices{};
-      const std::size_t first = b * kSweepBatch;
-      const std::size_t n = std::min(kSweepBatch, points.size() - first);
+      const std::size_t first = starts[b];
+      const std::size_t n = starts[b + 1] - first;
       for (std::size_t k = 0; k < n; ++k) indices[k] = first + k;
       BatchScratch scratch;  // a batch's own: its requests are made from this sweep's base
       compute_batch(req, &shared, std::span<const std::size_t>(indices.data(), n), scratch);
@@ -206,6 +215,7 @@ std::vector<SweepPoint> run_sweep(const SweepRequest& req) {
         p.zeta = in.zeta;
         p.axes = std::move(in.axes);
       }
+      points_done += n;
     });
   } catch (const ParallelError& e) {
     std::rethrow_exception(e.cause());

@@ -11,6 +11,7 @@
 // resume). A reader that stops reading (`| head`) ends the sweep quietly: output_closed().
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <condition_variable>
@@ -265,6 +266,15 @@ struct SweepWorkerTime {
 
 // The points a sweep's worker computes together (SweepRunOptions::batch, run_sweep).
 inline constexpr std::size_t kSweepBatchPoints = 128;
+
+// The size of the next batch of a sweep on `workers` workers with `left` points not handed out:
+// `max`, shrinking near the end of the grid to a share of what is left, left / (2 workers), at
+// least one point, so that the workers end together (guided scheduling). Handing out 128
+// points to the end, a worker of the 200 x 50 map (26 ms) was idle for half a batch on average.
+inline std::size_t guided_batch_size(std::size_t left, std::size_t workers, std::size_t max) {
+  if (workers <= 1) return std::max<std::size_t>(1, std::min(left, max));
+  return std::clamp<std::size_t>(left / (2 * workers), 1, max);
+}
 
 struct SweepRunOptions {
   const std::atomic<bool>* stop = nullptr;  // set by a signal handler: stop handing out work

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <random>
 #include <sstream>
 
@@ -172,6 +173,28 @@ TEST(SweepRun, ResultsAreIdenticalForAnyThreadCount) {
     EXPECT_EQ(sweep_csv_row(one[i].v0, one[i].zeta, one[i].result),
               sweep_csv_row(three[i].v0, three[i].zeta, three[i].result))
         << i;
+}
+
+TEST(SweepRun, ProgressCountsPointsAndBatchesShrinkNearTheEnd) {
+  SweepRequest req = paper_grid(20, 10);  // 200 points
+  req.threads = 2;
+  std::vector<std::size_t> done;
+  std::mutex mutex;  // parallel_for serialises the calls; the vector is guarded all the same
+  req.progress = [&](std::size_t d, std::size_t total) {
+    std::lock_guard lock(mutex);
+    EXPECT_EQ(total, 200u);
+    done.push_back(d);
+  };
+  run_sweep(req);
+  ASSERT_FALSE(done.empty());
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_EQ(done.back(), 200u);
+  // 200 points on two workers: batches of 50, 37, 28, 21, ... (guided_batch_size), not one of
+  // 128 and one of 72, which would leave a worker idle for most of the second
+  std::size_t batches = 0;
+  for (std::size_t left = 200; left > 0; ++batches) left -= guided_batch_size(left, 2, 128);
+  EXPECT_EQ(done.size(), batches);
+  EXPECT_GT(batches, 8u);
 }
 
 fs::path scratch(const std::string& name) {
