@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include <unistd.h>  // getpid: the map's scratch CSV
@@ -453,6 +454,32 @@ struct MapRun {
   std::vector<SweepWorkerTime> workers;
 };
 
+// The time [s] of a run, whether the run is its time or a map's run.
+double seconds_of(double seconds) {
+  return seconds;
+}
+double seconds_of(const MapRun& run) {
+  return run.seconds;
+}
+
+// run(i) for every i in [0, n), `rounds` times over in turn, so that the runs whose times make a
+// ratio see the machine in the same seconds (two series timed one after the other moved with
+// whatever else the machine did in between); for each i the run of median time.
+template <class Run>
+auto median_runs_in_turn(std::size_t n, int rounds, Run&& run) {
+  using R = std::decay_t<decltype(run(std::size_t{0}))>;
+  std::vector<std::vector<R>> runs(n);
+  for (int k = 0; k < rounds; ++k)
+    for (std::size_t i = 0; i < n; ++i) runs[i].push_back(run(i));
+  std::vector<R> medians;
+  for (std::vector<R>& r : runs) {
+    std::sort(r.begin(), r.end(),
+              [](const R& a, const R& b) { return seconds_of(a) < seconds_of(b); });
+    medians.push_back(r[r.size() / 2]);
+  }
+  return medians;
+}
+
 // A directory of the bench's own in the temporary directory, removed with what it holds at the
 // end. A sweep's set-up scans its output's directory for temporaries that killed runs left
 // (solver/atomic_file.h, remove_stale_temporaries): in a shared /tmp of 2,918 entries that took
@@ -495,9 +522,8 @@ MapRun run_map_with_csv(const SweepRequest& sweep, int threads, const std::files
   return run;
 }
 
-// The map on one and on two threads, the two alternating for `rounds` rounds, so that both see
-// the machine as it is in the same seconds (a ratio of two series timed one after the other
-// moved with whatever else the machine did in between); each the run of median time.
+// The map on one and on two threads, in turn for `rounds` rounds (median_runs_in_turn); each
+// the run of median time.
 struct MapRuns {
   MapRun one, two;
   int failed_one = 0, failed_two = 0;
@@ -506,18 +532,11 @@ MapRuns time_map_with_csv(const SweepRequest& sweep, int rounds) {
   const ScratchDirectory scratch("ivv-bench-map");
   const std::filesystem::path csv = scratch.path() / "map.csv";
   MapRuns out;
-  std::vector<MapRun> one, two;
-  for (int k = 0; k < rounds; ++k) {
-    one.push_back(run_map_with_csv(sweep, 1, csv, &out.failed_one));
-    two.push_back(run_map_with_csv(sweep, 2, csv, &out.failed_two));
-  }
-  auto median = [](std::vector<MapRun>& runs) {
-    std::sort(runs.begin(), runs.end(),
-              [](const MapRun& a, const MapRun& b) { return a.seconds < b.seconds; });
-    return runs[runs.size() / 2];
-  };
-  out.one = median(one);
-  out.two = median(two);
+  const std::vector<MapRun> runs = median_runs_in_turn(2, rounds, [&](std::size_t i) {
+    return run_map_with_csv(sweep, i == 0 ? 1 : 2, csv, i == 0 ? &out.failed_one : &out.failed_two);
+  });
+  out.one = runs[0];
+  out.two = runs[1];
   return out;
 }
 
@@ -727,19 +746,11 @@ void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
 constexpr int kTimingSlices = 5;
 std::vector<double> median_us_alternating(const std::vector<SimulationRequest>& requests,
                                           const Timing& timing) {
-  std::vector<std::vector<double>> slices(requests.size());
   const Timing slice{timing.min_seconds / kTimingSlices, 1};
-  for (int k = 0; k < std::max(kTimingSlices, timing.min_repeats); ++k)
-    for (std::size_t i = 0; i < requests.size(); ++i) {
-      ImpactResult r;
-      slices[i].push_back(median_us([&] { r = simulate(requests[i]); }, slice));
-    }
-  std::vector<double> medians;
-  for (std::vector<double>& s : slices) {
-    std::sort(s.begin(), s.end());
-    medians.push_back(s[s.size() / 2]);
-  }
-  return medians;
+  return median_runs_in_turn(requests.size(), kTimingSlices, [&](std::size_t i) {
+    ImpactResult r;
+    return median_us([&] { r = simulate(requests[i]); }, slice);
+  });
 }
 
 // --integrator auto against the fastest fixed integrator at every point of a grid that holds
@@ -972,23 +983,16 @@ void add_paper_targets(const Timing& timing, const LimitInputs& limits, BenchRep
 // failed points.
 std::vector<double> time_sweeps_alternating(const std::vector<SweepRequest>& requests, int rounds,
                                             std::vector<int>* failed) {
-  std::vector<std::vector<double>> seconds(requests.size());
   failed->assign(requests.size(), 0);
-  for (int k = 0; k < rounds; ++k)
-    for (std::size_t i = 0; i < requests.size(); ++i) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const std::vector<SweepPoint> points = run_sweep(requests[i]);
-      seconds[i].push_back(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      (*failed)[i] = static_cast<int>(std::count_if(
-          points.begin(), points.end(), [](const SweepPoint& p) { return !p.result.ok(); }));
-    }
-  std::vector<double> medians;
-  for (std::vector<double>& s : seconds) {
-    std::sort(s.begin(), s.end());
-    medians.push_back(s[s.size() / 2]);
-  }
-  return medians;
+  return median_runs_in_turn(requests.size(), rounds, [&](std::size_t i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<SweepPoint> points = run_sweep(requests[i]);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    (*failed)[i] = static_cast<int>(std::count_if(
+        points.begin(), points.end(), [](const SweepPoint& p) { return !p.result.ok(); }));
+    return seconds;
+  });
 }
 
 // The COR map through run_sweep: --model auto on one and two threads, the full model on one.

@@ -359,7 +359,7 @@ std::vector<std::size_t> SweepSink::take_locked(std::unique_lock<std::mutex>& lo
   out.reserve(max);  // one allocation a batch, not one for every doubling
   while (out.empty()) {
     if (stop_ || cursor_ >= total_) return out;
-    if (workers > 1) max = guided_batch_size(total_ - cursor_, workers, max);
+    max = guided_batch_size(total_ - cursor_, workers, max);
     if (cursor_ >= next_write_ + options_.window) {
       if (when_ahead == WhenAhead::return_empty) return out;
       written_cv_.wait_for(lock, std::chrono::milliseconds(100));  // also polls stop_
