@@ -522,21 +522,57 @@ MapRun run_map_with_csv(const SweepRequest& sweep, int threads, const std::files
   return run;
 }
 
-// The map on one and on two threads, in turn for `rounds` rounds (median_runs_in_turn); each
-// the run of median time.
+// The map as one-thread `ivv sweep` processes, for the control of the two-thread target
+// (ProcessControl): one alone, or two started together; the wall time [s] of the whole command,
+// NaN when a process fails.
+double map_processes(const std::string& ivv, const SweepRequest& sweep,
+                     const std::filesystem::path& scratch, int processes) {
+  const std::string command = "'" + ivv +
+                              "' sweep -q --scene paper --law elastoplastic --model auto "
+                              "--integrator auto --rtol 1e-8 --atol 1e-8 --threads 1 --v0 0.1:10:" +
+                              std::to_string(sweep.velocities.size()) +
+                              " --log --zeta 0:1:" + std::to_string(sweep.zetas.size()) +
+                              " --out '" + (scratch / "control-").string();
+  const std::string run = processes == 1 ? command + "a.csv'"
+                                         : "(" + command + "a.csv' & " + command + "b.csv' & wait)";
+  const auto t0 = std::chrono::steady_clock::now();
+  const int status = std::system((run + " >/dev/null 2>&1").c_str());
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return status == 0 ? s : kNaN;
+}
+
+// The control of the two-thread target, which measures the machine rather than the sweep: the
+// map as one-thread processes, one alone and two started together (map_processes). With two
+// free cores the pair takes as long as one alone; with one core shared, twice as long.
+// pair / (2 alone) is then the best ratio two threads can show on this machine at this moment
+// (0.5 on two free cores).
+struct ProcessControl {
+  double alone = kNaN, pair = kNaN;  // [s]
+  double best_ratio() const { return pair / (2.0 * alone); }
+};
+
+// The map on one and on two threads, and the control's processes where there is an ivv
+// executable to run, in turn for `rounds` rounds (median_runs_in_turn): the control sees the
+// machine in the same seconds as the ratio it judges (timed after the map, its three rounds read
+// 0.513-0.596 in runs whose two-thread ratio read 0.455-0.590). Each the run of median time.
 struct MapRuns {
   MapRun one, two;
   int failed_one = 0, failed_two = 0;
+  ProcessControl control;  // NaN: not measured
 };
-MapRuns time_map_with_csv(const SweepRequest& sweep, int rounds) {
+MapRuns time_map_with_csv(const SweepRequest& sweep, int rounds, const std::string& ivv) {
   const ScratchDirectory scratch("ivv-bench-map");
   const std::filesystem::path csv = scratch.path() / "map.csv";
   MapRuns out;
-  const std::vector<MapRun> runs = median_runs_in_turn(2, rounds, [&](std::size_t i) {
-    return run_map_with_csv(sweep, i == 0 ? 1 : 2, csv, i == 0 ? &out.failed_one : &out.failed_two);
-  });
+  const std::vector<MapRun> runs =
+      median_runs_in_turn(ivv.empty() ? 2 : 4, rounds, [&](std::size_t i) {
+        if (i >= 2) return MapRun{map_processes(ivv, sweep, scratch.path(), i == 2 ? 1 : 2), {}};
+        return run_map_with_csv(sweep, i == 0 ? 1 : 2, csv,
+                                i == 0 ? &out.failed_one : &out.failed_two);
+      });
   out.one = runs[0];
   out.two = runs[1];
+  if (runs.size() == 4) out.control = {runs[2].seconds, runs[3].seconds};
   return out;
 }
 
@@ -651,60 +687,40 @@ void describe_map(BenchTarget& t, const SweepRequest& sweep, double scale, const
   t.instructions_how += "; " + instructions_by_kind(in.ivv, common);
 }
 
-// The control of the two-thread target, which measures the machine rather than the sweep: the
-// map as one-thread `ivv sweep` processes, one alone and two started together (wall time of
-// each, median of three). With two free cores the pair takes as long as one alone; with one
-// core shared, twice as long. pair / (2 alone) is then the best ratio two threads can show on
-// this machine at this moment (0.5 on two free cores).
-struct ProcessControl {
-  double alone = kNaN, pair = kNaN;  // [s]
-  double best_ratio() const { return pair / (2.0 * alone); }
-};
-ProcessControl two_process_control(const std::string& ivv, int nv, int nz) {
-  const ScratchDirectory directory("ivv-bench-control");
-  const std::string scratch = (directory.path() / "map-").string();
-  const std::string sweep = "'" + ivv +
-                            "' sweep -q --scene paper --law elastoplastic --model auto "
-                            "--integrator auto --rtol 1e-8 --atol 1e-8 --threads 1 --v0 0.1:10:" +
-                            std::to_string(nv) + " --log --zeta 0:1:" + std::to_string(nz) +
-                            " --out '" + scratch;
-  auto wall = [](const std::string& command) {  // [s]; NaN when the command fails
-    const auto t0 = std::chrono::steady_clock::now();
-    const int status = std::system((command + " >/dev/null 2>&1").c_str());
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return status == 0 ? s : kNaN;
-  };
-  std::vector<double> alone, pair;
-  for (int k = 0; k < 3; ++k) {
-    alone.push_back(wall(sweep + "a.csv'"));
-    pair.push_back(wall("(" + sweep + "a.csv' & " + sweep + "b.csv' & wait)"));
-  }
-  auto median = [](std::vector<double> v) {
-    if (std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); })) return kNaN;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  return {median(alone), median(pair)};
-}
-
 // "; control: ..." for the two-thread target's description.
-std::string control_text(const std::string& ivv, bool quick) {
-  if (ivv.empty()) return "; control not measured (no ivv executable to run as processes)";
-  // quick: a 100 x 100 grid (~0.1 s a process), so that process start-up stays small beside it
-  const int n = quick ? 100 : 300;
-  const ProcessControl c = two_process_control(ivv, n, n);
+std::string control_text(const ProcessControl& c, const SweepRequest& sweep, bool have_ivv) {
+  if (!have_ivv) return "; control not measured (no ivv executable to run as processes)";
   if (std::isnan(c.best_ratio()))
     return "; control not measured (`ivv sweep` as a child process failed)";
-  const std::string grid = std::to_string(n) + " x " + std::to_string(n);
-  return "; control (the machine, not the sweep): the " + grid +
+  const std::string grid =
+      std::to_string(sweep.velocities.size()) + " x " + std::to_string(sweep.zetas.size());
+  return "; control (the machine, not the sweep), in the same rounds: the " + grid +
          " map as one-thread processes, two started together took " + fmt(c.pair, 3) +
-         " s against " + fmt(c.alone, 3) + " s alone (median of 3), so two threads can show at " +
+         " s against " + fmt(c.alone, 3) + " s alone (medians), so two threads can show at " +
          "best a ratio of " + fmt(c.best_ratio(), 3) +
          " on this machine now (0.5 on two free cores)";
 }
 
-// Rounds of the map on one and on two threads (time_map_with_csv).
+// Rounds of the map on one and on two threads, with the control's processes (time_map_with_csv).
 constexpr int kMapRounds = 5;
+
+// The two-thread target judged against the machine rather than against two free cores: the
+// ratio two threads showed over the best the control's processes showed in the same rounds
+// (ProcessControl::best_ratio). 1.9x of the 2x two free cores give is 95 % of the speed-up the
+// machine offers; the same 95 % of what it offered at that moment is (1/1.9) / (1/2) = 2/1.9.
+// Two one-thread processes share no lock, buffer or allocator, so what two threads lose beyond
+// them is the sweep's own. A miss of the 1.9x target with this one met is the machine's.
+void add_two_thread_against_machine(BenchReport& rep, double two_over_one,
+                                    const ProcessControl& control, const std::string& grid) {
+  const double best = control.best_ratio();
+  rep.targets.push_back(target(
+      "the same map on two threads within 95 % of the machine's two-process speed-up", 2.0 / 1.9,
+      "ratio", two_over_one / best,
+      grid + "(two-thread time / one-thread time) / (two one-thread processes together / (2 x " +
+          "one alone)), all timed in the same rounds: " + fmt(two_over_one, 3) + " / " +
+          fmt(best, 3) + "; 1 is two threads as good as two processes, 2/1.9 the bound",
+      "map"));
+}
 
 void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
   const int nv = quick ? 150 : 300, nz = quick ? 150 : 300;
@@ -718,7 +734,7 @@ void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
   sweep.velocities = log_grid(0.1, 10.0, nv);
   sweep.zetas = linear_grid(0.0, 1.0, nz);
   const double scale = (300.0 * 300.0) / (nv * nz);
-  const MapRuns runs = time_map_with_csv(sweep, kMapRounds);
+  const MapRuns runs = time_map_with_csv(sweep, kMapRounds, limits.ivv);
   const MapRun &run_one = runs.one, &run_two = runs.two;
   const int failed_one = runs.failed_one, failed_two = runs.failed_two;
   const double one = run_one.seconds * scale, two = run_two.seconds * scale;
@@ -731,11 +747,13 @@ void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
              "map"));
   if (failed_one > 0) rep.targets.back().met = false;
   describe_map(rep.targets.back(), sweep, scale, limits);
-  rep.targets.push_back(target(
-      "the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
-      grid + "two-thread time / one-thread time (" + std::to_string(failed_two) +
-          " failed points)" + worker_text(run_one, run_two) + control_text(limits.ivv, quick),
-      "map"));
+  rep.targets.push_back(
+      target("the same map >= 1.9x faster on two threads", 1.0 / 1.9, "ratio", two / one,
+             grid + "two-thread time / one-thread time (" + std::to_string(failed_two) +
+                 " failed points)" + worker_text(run_one, run_two) +
+                 control_text(runs.control, sweep, !limits.ivv.empty()),
+             "map"));
+  add_two_thread_against_machine(rep, two / one, runs.control, grid);
 }
 
 // The median time [us] of simulate() of each request, timed in turn in kTimingSlices slices of
