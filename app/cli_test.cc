@@ -50,6 +50,22 @@ TEST(Cli, SummaryIsReadable) {
   EXPECT_NE(r.out.find("F_max"), std::string::npos);
 }
 
+// The loader never looks for ivv's libraries in the directory it is run from: with CMake's build
+// RPATH ("/usr/lib/x86_64-linux-gnu/openmpi/lib:", whose empty entry is that directory) a file
+// named libgsl.so.27 there was loaded in place of Debian's, and ivv died before main ("file too
+// short", exit 127).
+TEST(Cli, LoadsNoLibraryFromTheDirectoryItRunsIn) {
+  const fs::path dir = scratch("stray-libraries");
+  fs::create_directories(dir);
+  std::ofstream(dir / "libgsl.so.27") << "not a library\n";
+  const std::string cmd =
+      "cd '" + dir.string() + "' && '" + std::string(IVV_BINARY) + "' --help >/dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  fs::remove_all(dir);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
 TEST(Cli, IntegratorsListsOnePerLine) {
   const CliRun r = ivv("integrators");
   ASSERT_EQ(r.exit_code, 0);
