@@ -230,6 +230,10 @@ TEST(Cli, SweepWritesTheGrid) {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 1 + 4 * 3);
+  // the summary says what it wrote, how long it took and what an impact cost
+  EXPECT_NE(r.err.find("wrote 12 impacts to"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s, "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" us an impact\n"), std::string::npos) << r.err;
 }
 
 // Bad input: exit 2, one message naming the field, no output file.
