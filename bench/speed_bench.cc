@@ -421,8 +421,12 @@ auto median_runs_in_turn(std::size_t n, int rounds, Run&& run) {
   return medians;
 }
 
-// Slices in which runs whose times make a ratio are timed in turn (median_runs_in_turn).
+// Slices in which runs whose times make a ratio are timed in turn (median_runs_in_turn), each
+// a kTimingSlices-th of the timing's minimum time.
 constexpr int kTimingSlices = 5;
+Timing timing_slice(const Timing& timing) {
+  return {timing.min_seconds / kTimingSlices, 1};
+}
 
 // ivv's fastest point and the odeint idiom's fastest reaching |de|/e <= level on the paper scene
 // (v0 = 1 m/s, zeta = 0.1, elastoplastic), found in the sweep of tolerances, then timed again in
@@ -456,7 +460,7 @@ InTurn ivv_and_odeint_in_turn(const BenchReport& rep, double level, const Timing
   else
     req.options.rtol = req.options.atol = mine->rtol;
   const double tol = theirs->rtol;
-  const Timing slice{timing.min_seconds / kTimingSlices, 1};
+  const Timing slice = timing_slice(timing);
   const std::vector<double> us = median_runs_in_turn(2, kTimingSlices, [&](std::size_t i) {
     if (i == 0) {
       ImpactResult r;
@@ -511,8 +515,8 @@ void add_peer_ratio_targets(BenchReport& rep, const LimitInputs& limits, const T
   // the per-impact target keeps its time from the sweep; its description gains the second one
   for (BenchTarget& t : rep.targets)
     if (t.name == kPaperImpactTarget)
-      t.how += "; timed again in turn with the odeint idiom (5 slices): " + fmt(odeint.ivv_us, 4) +
-               " us";
+      t.how += "; timed again in turn with the odeint idiom (" + std::to_string(kTimingSlices) +
+               " slices): " + fmt(odeint.ivv_us, 4) + " us";
   const double adams = peer_us(Peer::cvode_adams), bdf = peer_us(Peer::cvode_bdf);
   const bool adams_faster = !(bdf < adams);  // NaN (level not reached) loses
   const double cvode = adams_faster ? adams : bdf;
@@ -575,15 +579,26 @@ MapRun run_map_with_csv(const SweepRequest& sweep, int threads, const std::files
 
 // The map as one-thread `ivv sweep` processes, for the control of the two-thread target
 // (ProcessControl): one alone, or two started together; the wall time [s] of the whole command,
-// NaN when a process fails.
+// NaN when a process fails. The grid's ends, counts and tolerances are the request's (its v0
+// grid logarithmic, its zeta grid linear, as add_map_targets makes them).
 double map_processes(const std::string& ivv, const SweepRequest& sweep,
                      const std::filesystem::path& scratch, int processes) {
+  auto grid = [](const std::vector<double>& v) {
+    std::string g;
+    append_shortest(g, v.front());
+    g += ':';
+    append_shortest(g, v.back());
+    return g + ':' + std::to_string(v.size());
+  };
+  std::string tolerances = " --rtol ";
+  append_shortest(tolerances, sweep.base.options.rtol);
+  tolerances += " --atol ";
+  append_shortest(tolerances, sweep.base.options.atol);
   const std::string command = "'" + ivv +
                               "' sweep -q --scene paper --law elastoplastic --model auto "
-                              "--integrator auto --rtol 1e-8 --atol 1e-8 --threads 1 --v0 0.1:10:" +
-                              std::to_string(sweep.velocities.size()) +
-                              " --log --zeta 0:1:" + std::to_string(sweep.zetas.size()) +
-                              " --out '" + (scratch / "control-").string();
+                              "--integrator auto --threads 1" +
+                              tolerances + " --v0 " + grid(sweep.velocities) + " --log --zeta " +
+                              grid(sweep.zetas) + " --out '" + (scratch / "control-").string();
   const std::string run = processes == 1 ? command + "a.csv'"
                                          : "(" + command + "a.csv' & " + command + "b.csv' & wait)";
   const auto t0 = std::chrono::steady_clock::now();
@@ -615,15 +630,20 @@ MapRuns time_map_with_csv(const SweepRequest& sweep, int rounds, const std::stri
   const ScratchDirectory scratch("ivv-bench-map");
   const std::filesystem::path csv = scratch.path() / "map.csv";
   MapRuns out;
+  bool control_failed = false;  // a process failed: its NaN is not sorted among the times
   const std::vector<MapRun> runs =
       median_runs_in_turn(ivv.empty() ? 2 : 4, rounds, [&](std::size_t i) {
-        if (i >= 2) return MapRun{map_processes(ivv, sweep, scratch.path(), i == 2 ? 1 : 2), {}};
+        if (i >= 2) {
+          const double s = map_processes(ivv, sweep, scratch.path(), i == 2 ? 1 : 2);
+          control_failed = control_failed || std::isnan(s);
+          return MapRun{std::isnan(s) ? 0.0 : s, {}};
+        }
         return run_map_with_csv(sweep, i == 0 ? 1 : 2, csv,
                                 i == 0 ? &out.failed_one : &out.failed_two);
       });
   out.one = runs[0];
   out.two = runs[1];
-  if (runs.size() == 4) out.control = {runs[2].seconds, runs[3].seconds};
+  if (runs.size() == 4 && !control_failed) out.control = {runs[2].seconds, runs[3].seconds};
   return out;
 }
 
@@ -814,7 +834,7 @@ void add_map_targets(BenchReport& rep, bool quick, const LimitInputs& limits) {
 // no step), where a loop of 20,000 calls each reads 0.71 and 0.67.
 std::vector<double> median_us_alternating(const std::vector<SimulationRequest>& requests,
                                           const Timing& timing) {
-  const Timing slice{timing.min_seconds / kTimingSlices, 1};
+  const Timing slice = timing_slice(timing);
   return median_runs_in_turn(requests.size(), kTimingSlices, [&](std::size_t i) {
     ImpactResult r;
     return median_us([&] { r = simulate(requests[i]); }, slice);
